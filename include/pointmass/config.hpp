@@ -1,0 +1,150 @@
+// pointmass/config.hpp — the library's configuration and its one contract mechanism.
+//
+// POINTMASS_HD        marks every function a GPU kernel may call (`__host__ __device__`
+//                     under a CUDA compiler, nothing otherwise).
+// POINTMASS_VERSION   the library's version, as major * 10000 + minor * 100 + patch.
+//
+// Contracts. Two kinds of check, one mechanism:
+//   * Setters (`set_mass`, `set_damping`, ...) always validate: they are off the hot path.
+//   * Hot-path preconditions (`integrate`'s duration, `add_force`'s vector) are checked when
+//     POINTMASS_CHECKS is 1: by default in debug builds (NDEBUG undefined). Define
+//     POINTMASS_ENABLE_CHECKS to check in release builds too, or POINTMASS_DISABLE_CHECKS
+//     to check nowhere.
+// A failed check calls the installed ContractHandler with a ContractViolation that names the
+// function, the argument and its value, and the requirement it broke. The default handler
+// throws std::invalid_argument where exceptions are enabled; with -fno-exceptions it prints
+// the message to stderr and aborts. `set_contract_handler` installs another. If a handler
+// returns, the call that failed its check returns without changing anything.
+#pragma once
+
+#include <atomic>
+#include <charconv>
+#include <cstddef>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS)
+#include <stdexcept>
+#define POINTMASS_HAS_EXCEPTIONS 1
+#else
+#define POINTMASS_HAS_EXCEPTIONS 0
+#endif
+
+#define POINTMASS_VERSION_MAJOR 0
+#define POINTMASS_VERSION_MINOR 1
+#define POINTMASS_VERSION_PATCH 0
+#define POINTMASS_VERSION                                                                  \
+  (POINTMASS_VERSION_MAJOR * 10000 + POINTMASS_VERSION_MINOR * 100 + POINTMASS_VERSION_PATCH)
+
+#if defined(__CUDACC__)
+#define POINTMASS_HD __host__ __device__
+#else
+#define POINTMASS_HD
+#endif
+
+#if defined(POINTMASS_DISABLE_CHECKS)
+#define POINTMASS_CHECKS 0
+#elif defined(POINTMASS_ENABLE_CHECKS) || !defined(NDEBUG)
+#define POINTMASS_CHECKS 1
+#else
+#define POINTMASS_CHECKS 0
+#endif
+
+namespace pointmass {
+
+/// What a failed check reports: enough to write "integrate: duration = -0.1 must be >= 0".
+struct ContractViolation {
+  const char* function;     ///< the public function whose precondition failed
+  const char* argument;     ///< the argument's name, as documented
+  const char* requirement;  ///< what the argument must satisfy
+  long double value[3];     ///< the offending value (a vector uses all three)
+  int components;           ///< 1 for a number, 3 for a vector
+};
+
+using ContractHandler = void (*)(const ContractViolation&);
+
+namespace detail {
+
+inline void append_number(std::string& out, long double x) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  out.append(buffer, result.ptr);
+}
+
+}  // namespace detail
+
+/// "set_mass: argument 'mass' = -1 must be > 0 and not NaN".
+inline std::string describe(const ContractViolation& violation) {
+  std::string message = "pointmass: ";
+  message += violation.function;
+  message += ": argument '";
+  message += violation.argument;
+  message += "' = ";
+  if (violation.components == 1) {
+    detail::append_number(message, violation.value[0]);
+  } else {
+    message += '(';
+    for (int i = 0; i < violation.components; ++i) {
+      if (i != 0) message += ", ";
+      detail::append_number(message, violation.value[i]);
+    }
+    message += ')';
+  }
+  message += " must be ";
+  message += violation.requirement;
+  return message;
+}
+
+/// The default handler: throw std::invalid_argument, or print and abort without exceptions.
+inline void default_contract_handler(const ContractViolation& violation) {
+#if POINTMASS_HAS_EXCEPTIONS
+  throw std::invalid_argument(describe(violation));
+#else
+  const std::string message = describe(violation);
+  std::fputs(message.c_str(), stderr);
+  std::fputc('\n', stderr);
+  std::abort();
+#endif
+}
+
+namespace detail {
+inline std::atomic<ContractHandler> contract_handler{&default_contract_handler};
+}  // namespace detail
+
+/// Installs `handler` (nullptr restores the default) and returns the one it replaces.
+inline ContractHandler set_contract_handler(ContractHandler handler) noexcept {
+  return detail::contract_handler.exchange(handler != nullptr ? handler
+                                                               : &default_contract_handler);
+}
+
+inline ContractHandler contract_handler() noexcept { return detail::contract_handler.load(); }
+
+namespace detail {
+
+// Out of line and cold, so that a check costs the hot path one compare and one branch.
+[[gnu::cold]] [[gnu::noinline]] inline void report_violation(const char* function,
+                                                             const char* argument,
+                                                             const char* requirement,
+                                                             long double x, long double y,
+                                                             long double z, int components) {
+  const ContractViolation violation{function, argument, requirement, {x, y, z}, components};
+  pointmass::contract_handler()(violation);
+}
+
+template <class T>
+[[gnu::cold]] inline void report_scalar(const char* function, const char* argument,
+                                        const char* requirement, T value) {
+  report_violation(function, argument, requirement, static_cast<long double>(value), 0.0L,
+                   0.0L, 1);
+}
+
+template <class V>
+[[gnu::cold]] inline void report_vector(const char* function, const char* argument,
+                                        const char* requirement, const V& value) {
+  report_violation(function, argument, requirement, static_cast<long double>(value.x),
+                   static_cast<long double>(value.y), static_cast<long double>(value.z), 3);
+}
+
+}  // namespace detail
+}  // namespace pointmass

@@ -1,0 +1,207 @@
+// pointmass/particle.hpp — the point mass and its integrator.
+//
+//   pointmass::Particle<float>                       the seed's engine: per-second damping,
+//                                                    position p + v t
+//   pointmass::Particle<double, damping::PerFrame, position::Kinematic>
+//   pointmass::BasicParticle<Quantities, D, P>       the same over any QuantitySet (units.hpp
+//                                                    uses it for SI quantities)
+//
+// One step of duration t (`integrate`), as the policies compose:
+//   a  = acceleration + force_accumulator * inverse_mass     resulting acceleration
+//   f  = D::factors(damping, t)                              per-step damping factors (d^t, ...)
+//   v1 = D::velocity(v0, a, t, f)                            eq. 3.5, 3.6, listing form, none, exact
+//   p1 = P::position(p0, v0, v1, a, t, f)                    p + v0 t, + a t^2/2, p + v1 t, exact
+//   force_accumulator = 0
+// An infinite-mass particle (inverse mass 0) does not move: `integrate` only clears its
+// accumulator. A zero duration changes nothing (the accumulated force waits for the next
+// step). The acceleration is the user's (mainly gravity) and is never changed by a step.
+#pragma once
+
+#include <type_traits>
+
+#include "config.hpp"
+#include "damping.hpp"
+#include "position.hpp"
+#include "quantities.hpp"
+#include "real.hpp"
+#include "vector3.hpp"
+
+namespace pointmass {
+
+/// One step of the model on one body's values, the damping factors already computed.
+/// Generic arithmetic: p and v may be Vector3s or single components (the batch form steps
+/// x, y and z apart), plain numbers or dimensioned quantities.
+template <class D, class P, class Position, class Velocity, class Acceleration, class Time,
+          class Factors>
+POINTMASS_HD constexpr void advance(Position& p, Velocity& v, const Acceleration& a,
+                                    const Time& t, const Factors& factors) noexcept {
+  const Velocity v1 = D::velocity(v, a, t, factors);
+  p = P::position(p, v, v1, a, t, factors);
+  v = v1;
+}
+
+template <QuantitySet Q, DampingPolicy D = damping::PerSecond,
+          PositionPolicyFor<D> P = position::Euler>
+class BasicParticle {
+ public:
+  using quantities = Q;
+  using real = typename Q::real;
+  using damping_policy = D;
+  using position_policy = P;
+  using length_type = typename Q::length;
+  using velocity_type = typename Q::velocity;
+  using acceleration_type = typename Q::acceleration;
+  using time_type = typename Q::time;
+  using mass_type = typename Q::mass;
+  using inverse_mass_type = typename Q::inverse_mass;
+  using force_type = typename Q::force;
+  using damping_state = typename D::template State<real>;
+
+  /// True when the damping policy stores a damping value (and so has set_damping).
+  static constexpr bool stores_damping = !std::is_empty_v<damping_state>;
+
+  /// At rest at the origin, no acceleration, mass 1, damping 1 (none).
+  constexpr BasicParticle() noexcept = default;
+
+  // --- state -------------------------------------------------------------------------------
+
+  POINTMASS_HD constexpr Vector3<length_type> position() const noexcept {
+    return typed<length_type>(position_);
+  }
+  POINTMASS_HD constexpr Vector3<velocity_type> velocity() const noexcept {
+    return typed<velocity_type>(velocity_);
+  }
+  POINTMASS_HD constexpr Vector3<acceleration_type> acceleration() const noexcept {
+    return typed<acceleration_type>(acceleration_);
+  }
+  POINTMASS_HD constexpr Vector3<force_type> force_accumulator() const noexcept {
+    return typed<force_type>(force_accumulator_);
+  }
+  /// The fraction of velocity kept (per second or per frame, as the policy says); 1 for
+  /// damping::None.
+  POINTMASS_HD constexpr real damping() const noexcept { return damping_.value(); }
+  POINTMASS_HD constexpr inverse_mass_type inverse_mass() const noexcept {
+    return Q::template make<inverse_mass_type>(inverse_mass_);
+  }
+  /// The mass; infinity for an immovable particle (inverse mass 0).
+  POINTMASS_HD constexpr mass_type mass() const noexcept {
+    return Q::template make<mass_type>(inverse_mass_ > real(0) ? real(1) / inverse_mass_
+                                                               : real_infinity<real>);
+  }
+  /// False for an immovable particle (inverse mass 0).
+  POINTMASS_HD constexpr bool has_finite_mass() const noexcept { return inverse_mass_ > real(0); }
+
+  // --- setters: always validated; a rejected value leaves the particle unchanged ------------
+
+  constexpr void set_position(const Vector3<length_type>& position) {
+    if (const auto p = raw(position); check_finite("set_position", "position", p)) position_ = p;
+  }
+  constexpr void set_velocity(const Vector3<velocity_type>& velocity) {
+    if (const auto v = raw(velocity); check_finite("set_velocity", "velocity", v)) velocity_ = v;
+  }
+  constexpr void set_acceleration(const Vector3<acceleration_type>& acceleration) {
+    if (const auto a = raw(acceleration); check_finite("set_acceleration", "acceleration", a)) {
+      acceleration_ = a;
+    }
+  }
+  /// mass > 0 (infinity makes the particle immovable); zero, negative, NaN, or a mass so
+  /// small that 1/mass overflows `real` is rejected.
+  constexpr void set_mass(const mass_type& mass) {
+    const real m = Q::raw(mass);
+    if (real_isnan(m) || !(m > real(0)) || !real_isfinite(real(1) / m)) {
+      detail::report_scalar("set_mass", "mass", "> 0, not NaN, with 1/mass finite", m);
+      return;
+    }
+    inverse_mass_ = real(1) / m;
+  }
+  /// inverse mass >= 0 and finite; 0 makes the particle immovable. Zero mass (infinite
+  /// inverse mass) cannot be expressed.
+  constexpr void set_inverse_mass(const inverse_mass_type& inverse_mass) {
+    const real im = Q::raw(inverse_mass);
+    if (!real_isfinite(im) || im < real(0)) {
+      detail::report_scalar("set_inverse_mass", "inverse_mass", ">= 0 and finite", im);
+      return;
+    }
+    inverse_mass_ = im;
+  }
+  /// 0 <= damping <= 1: the fraction of velocity kept per second (per frame for PerFrame).
+  constexpr void set_damping(real damping)
+    requires stores_damping
+  {
+    if (real_isnan(damping) || damping < real(0) || damping > real(1)) {
+      detail::report_scalar("set_damping", "damping", "in [0, 1]", damping);
+      return;
+    }
+    damping_ = damping_state(damping);
+  }
+
+  // --- forces and integration --------------------------------------------------------------
+
+  /// Adds a force for the next step only. A non-finite force is a contract violation,
+  /// checked when POINTMASS_CHECKS is on (debug builds by default).
+  POINTMASS_HD constexpr void add_force(const Vector3<force_type>& force) {
+    const auto f = raw(force);
+#if POINTMASS_CHECKS && !defined(__CUDA_ARCH__)
+    if (!check_finite("add_force", "force", f)) return;
+#endif
+    force_accumulator_ += f;
+  }
+  POINTMASS_HD constexpr void clear_accumulator() noexcept { force_accumulator_ = {}; }
+
+  /// Advances the particle by `duration` (see the file comment). A negative, NaN or infinite
+  /// duration is a contract violation, checked when POINTMASS_CHECKS is on; zero changes
+  /// nothing.
+  POINTMASS_HD constexpr void integrate(const time_type& duration) {
+    const real t = Q::raw(duration);
+#if POINTMASS_CHECKS && !defined(__CUDA_ARCH__)
+    if (!real_isfinite(t) || t < real(0)) {
+      detail::report_scalar("integrate", "duration", "finite and >= 0", t);
+      return;
+    }
+#endif
+    if (!(inverse_mass_ > real(0))) {  // immovable: forces cannot move it
+      force_accumulator_ = {};
+      return;
+    }
+    if (t == real(0)) return;
+
+    const Vector3<acceleration_type> resulting_acceleration =
+        typed<acceleration_type>(acceleration_) +
+        typed<force_type>(force_accumulator_) * Q::template make<inverse_mass_type>(inverse_mass_);
+    auto p = typed<length_type>(position_);
+    auto v = typed<velocity_type>(velocity_);
+    advance<D, P>(p, v, resulting_acceleration, duration, D::factors(damping_, duration));
+    position_ = raw(p);
+    velocity_ = raw(v);
+    force_accumulator_ = {};
+  }
+
+ private:
+  template <class T>
+  POINTMASS_HD static constexpr Vector3<T> typed(const Vector3<real>& v) noexcept {
+    return {Q::template make<T>(v.x), Q::template make<T>(v.y), Q::template make<T>(v.z)};
+  }
+  template <class T>
+  POINTMASS_HD static constexpr Vector3<real> raw(const Vector3<T>& v) noexcept {
+    return {Q::raw(v.x), Q::raw(v.y), Q::raw(v.z)};
+  }
+  static constexpr bool check_finite(const char* function, const char* argument,
+                                     const Vector3<real>& v) {
+    if (is_finite(v)) return true;
+    detail::report_vector(function, argument, "finite", v);
+    return false;
+  }
+
+  Vector3<real> position_{};
+  Vector3<real> velocity_{};
+  Vector3<real> acceleration_{};
+  Vector3<real> force_accumulator_{};
+  real inverse_mass_ = real(1);
+  [[no_unique_address]] damping_state damping_{};
+};
+
+/// The particle over plain numbers (SI units by convention: metres, seconds, kilograms).
+template <Real R, DampingPolicy D = damping::PerSecond, PositionPolicyFor<D> P = position::Euler>
+using Particle = BasicParticle<PlainQuantities<R>, D, P>;
+
+}  // namespace pointmass

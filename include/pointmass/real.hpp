@@ -1,0 +1,136 @@
+// pointmass/real.hpp — the floating-point types the library computes in, and the maths
+// functions matched to each precision.
+//
+// `Real` is float, double or long double; any other type is rejected by the concept. Every
+// function here computes in the precision of its argument and returns that type:
+// `real_pow(float, float)` calls `powf`, never `pow` on promoted doubles, so a float particle
+// stays in float arithmetic end to end (the library builds clean under -Wdouble-promotion).
+//
+// `scalar_t<T>` is the Real a (possibly dimensioned) type is made of: `float` for float,
+// `Y` for a Boost.Units `quantity<Unit, Y>` (specialised in units.hpp).
+#pragma once
+
+#include <cmath>
+#include <concepts>
+#include <limits>
+#include <type_traits>
+
+#include "config.hpp"
+
+namespace pointmass {
+
+/// The precisions the library computes in.
+template <class T>
+concept Real = std::same_as<T, float> || std::same_as<T, double> || std::same_as<T, long double>;
+
+/// What a value's number is made of; specialised for dimensioned types by units.hpp.
+template <class T>
+struct ScalarOf {
+  using type = T;
+};
+template <class T>
+using scalar_t = typename ScalarOf<T>::type;
+
+// The builtins below are what <cmath> calls; used directly they are also usable in constant
+// expressions (g++ and clang) and raise no floating-point exception on NaN or infinity.
+
+template <Real R>
+POINTMASS_HD constexpr bool real_isnan(R x) noexcept {
+  return __builtin_isnan(x);
+}
+
+template <Real R>
+POINTMASS_HD constexpr bool real_isfinite(R x) noexcept {
+  return __builtin_isfinite(x);
+}
+
+template <Real R>
+POINTMASS_HD constexpr R real_abs(R x) noexcept {
+  if constexpr (std::same_as<R, float>) return __builtin_fabsf(x);
+  else if constexpr (std::same_as<R, double>) return __builtin_fabs(x);
+  else return __builtin_fabsl(x);
+}
+
+/// base^exponent in R: powf, pow or powl.
+template <Real R>
+POINTMASS_HD inline R real_pow(R base, R exponent) noexcept {
+  if constexpr (std::same_as<R, float>) return ::powf(base, exponent);
+  else if constexpr (std::same_as<R, double>) return ::pow(base, exponent);
+  else return ::powl(base, exponent);
+}
+
+/// Square root in R; usable in constant expressions (Newton's iteration there).
+template <Real R>
+POINTMASS_HD constexpr R real_sqrt(R x) noexcept {
+  if (std::is_constant_evaluated()) {
+    if (!(x > R(0)) || !real_isfinite(x)) return x == R(0) || x > R(0) ? x : R(0) / R(0);
+    R root = x > R(1) ? x : R(1);
+    for (;;) {
+      const R next = (root + x / root) / R(2);
+      if (!(next < root)) return root;
+      root = next;
+    }
+  }
+  if constexpr (std::same_as<R, float>) return ::sqrtf(x);
+  else if constexpr (std::same_as<R, double>) return ::sqrt(x);
+  else return ::sqrtl(x);
+}
+
+/// Natural logarithm in R.
+template <Real R>
+POINTMASS_HD inline R real_log(R x) noexcept {
+  if constexpr (std::same_as<R, float>) return ::logf(x);
+  else if constexpr (std::same_as<R, double>) return ::log(x);
+  else return ::logl(x);
+}
+
+template <Real R>
+POINTMASS_HD inline R real_exp(R x) noexcept {
+  if constexpr (std::same_as<R, float>) return ::expf(x);
+  else if constexpr (std::same_as<R, double>) return ::exp(x);
+  else return ::expl(x);
+}
+
+/// e^x - 1, accurate for small x (where exp(x) - 1 would cancel).
+template <Real R>
+POINTMASS_HD inline R real_expm1(R x) noexcept {
+  if constexpr (std::same_as<R, float>) return ::expm1f(x);
+  else if constexpr (std::same_as<R, double>) return ::expm1(x);
+  else return ::expm1l(x);
+}
+
+template <Real R>
+POINTMASS_HD inline R real_sin(R x) noexcept {
+  if constexpr (std::same_as<R, float>) return ::sinf(x);
+  else if constexpr (std::same_as<R, double>) return ::sin(x);
+  else return ::sinl(x);
+}
+
+template <Real R>
+POINTMASS_HD inline R real_cos(R x) noexcept {
+  if constexpr (std::same_as<R, float>) return ::cosf(x);
+  else if constexpr (std::same_as<R, double>) return ::cos(x);
+  else return ::cosl(x);
+}
+
+template <Real R>
+inline constexpr R real_infinity = std::numeric_limits<R>::infinity();
+
+}  // namespace pointmass
+
+namespace pointmass {
+
+/// How a duration type converts to a number of seconds; units.hpp specialises it for
+/// Boost.Units times. A plain Real duration is already a number of seconds.
+template <class T>
+struct TimeTraits {
+  POINTMASS_HD static constexpr T seconds(T t) noexcept { return t; }
+};
+
+/// The number of seconds in a duration, as the duration's Real.
+template <class T>
+POINTMASS_HD constexpr scalar_t<T> in_seconds(const T& t) noexcept {
+  return TimeTraits<T>::seconds(t);
+}
+
+}  // namespace pointmass

@@ -1,0 +1,31 @@
+# Shared by the project's commands: installing what they need, configuring and building.
+# Sourced, not run.
+
+# The Debian packages a full build and test run needs.
+POINTMASS_PACKAGES=(cmake ninja-build g++ clang libboost-dev doctest-dev libbenchmark-dev
+                    libtbb-dev gnuplot-nox)
+
+# Installs those of the named Debian packages that are missing (apt-get update first, once).
+ensure_packages() {
+  local missing=() package
+  for package in "$@"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q 'install ok installed' ||
+      missing+=("$package")
+  done
+  ((${#missing[@]} == 0)) && return 0
+  local sudo=()
+  [[ $(id -u) -ne 0 ]] && sudo=(sudo)
+  echo "== installing: ${missing[*]}"
+  "${sudo[@]}" apt-get update
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
+}
+
+# configure_and_build BUILD_DIR [cmake arguments...]: configure with Ninja and build all.
+configure_and_build() {
+  local dir=$1
+  shift
+  cmake -S "$POINTMASS_ROOT" -B "$dir" -G Ninja "$@"
+  cmake --build "$dir" --parallel "$(nproc)"
+}
+
+POINTMASS_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

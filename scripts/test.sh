@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# The whole test suite, as CI runs it: installs what is missing, then builds and runs every
+# test with g++ (debug, contract checks on), with clang (release), and under AddressSanitizer
+# and UndefinedBehaviorSanitizer. All warnings are errors.
+#   scripts/test.sh            everything
+#   scripts/test.sh gcc        one configuration: gcc, clang or sanitize
+set -euo pipefail
+source "$(dirname "$0")/common.sh"
+ensure_packages "${POINTMASS_PACKAGES[@]}"
+
+configurations=("$@")
+((${#configurations[@]})) || configurations=(gcc clang sanitize)
+
+for configuration in "${configurations[@]}"; do
+  dir="$POINTMASS_ROOT/build/test-$configuration"
+  echo "== $configuration: configure and build in $dir"
+  case "$configuration" in
+    gcc) configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=Debug ;;
+    clang) configure_and_build "$dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release ;;
+    sanitize)
+      configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=Debug \
+        -DPOINTMASS_BUILD_BENCHMARKS=OFF \
+        "-DCMAKE_CXX_FLAGS=-O1 -fno-omit-frame-pointer -fsanitize=address,undefined,float-divide-by-zero -fno-sanitize-recover=all"
+      ;;
+    *) echo "unknown configuration: $configuration (gcc, clang, sanitize)" >&2; exit 2 ;;
+  esac
+  echo "== $configuration: test"
+  ctest --test-dir "$dir" --output-on-failure --parallel "$(nproc)"
+done
