@@ -12,3 +12,12 @@ function(pointmass_add_executable name)
   add_executable(${name} ${ARGN})
   target_link_libraries(${name} PRIVATE pointmass::pointmass pointmass_warnings)
 endfunction()
+
+# Boost (headers only): Odeint for the reference solutions, Units for units.hpp.
+find_package(Boost 1.74 REQUIRED)
+
+# Project-internal support code shared by tests, examples and benchmarks (never installed):
+# tolerances, reference solutions, measurement helpers. Lives in tests/support/.
+add_library(pointmass_support INTERFACE)
+target_include_directories(pointmass_support INTERFACE "${PROJECT_SOURCE_DIR}/tests/support")
+target_link_libraries(pointmass_support INTERFACE pointmass::pointmass Boost::headers)
