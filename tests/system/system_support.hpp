@@ -1,0 +1,47 @@
+// Shared by the ParticleSystem tests: a reproducible scene of particles, and bit-for-bit
+// comparison of a system against the equivalent scalar Particles.
+#pragma once
+
+#include <doctest/doctest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include <pointmass/particle.hpp>
+#include <pointmass/particle_system.hpp>
+#include <pointmass/vector3.hpp>
+
+namespace pointmass::test {
+
+/// The same bits (so NaN == NaN, and +0 != -0).
+template <class R>
+bool same_bits(R a, R b) {
+  return std::memcmp(&a, &b, sizeof(R)) == 0;
+}
+template <class R>
+bool same_bits(const Vector3<R>& a, const Vector3<R>& b) {
+  return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
+}
+
+/// A random vector with components in [-scale, scale] (never -0).
+template <class R>
+Vector3<R> random_vector(std::mt19937& engine, R scale) {
+  std::uniform_real_distribution<R> component(-scale, scale);
+  return {component(engine), component(engine), component(engine)};
+}
+
+/// Index of the particle of `system` whose bits equal `particle`'s position, velocity; true
+/// when every particle of `system` has exactly the state of the particle at the same index.
+template <class System, class Particle>
+bool matches(const System& system, const std::vector<Particle>& particles) {
+  if (system.size() != particles.size()) return false;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    if (!same_bits(system.position(i), particles[i].position())) return false;
+    if (!same_bits(system.velocity(i), particles[i].velocity())) return false;
+  }
+  return true;
+}
+
+}  // namespace pointmass::test

@@ -1,0 +1,177 @@
+// A system and the equivalent scalar Particles, stepped side by side, agree bit for bit:
+// each particle's step is advance<D, P> on x, y and z apart, the same operations in the same
+// order as Particle::integrate on a Vector3, so nothing may differ (not even by one ulp).
+// Every damping and position policy pair, float and double; uniform and per-particle values.
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cstddef>
+#include <random>
+#include <tuple>
+#include <type_traits>
+#include <vector>
+
+#include <pointmass/particle_system.hpp>
+
+#include "system_support.hpp"
+
+namespace {
+
+using namespace pointmass;
+using pointmass::test::matches;
+using pointmass::test::random_vector;
+using pointmass::test::same_bits;
+
+template <class R, class D, class P>
+struct Config {
+  using real = R;
+  using damping_policy = D;
+  using position_policy = P;
+};
+
+template <class R>
+using AllPairs = std::tuple<
+    Config<R, damping::None, position::Euler>, Config<R, damping::None, position::Kinematic>,
+    Config<R, damping::None, position::SemiImplicit>, Config<R, damping::None, position::Exact>,
+    Config<R, damping::PerFrame, position::Euler>,
+    Config<R, damping::PerFrame, position::Kinematic>,
+    Config<R, damping::PerFrame, position::SemiImplicit>,
+    Config<R, damping::PerSecond, position::Euler>,
+    Config<R, damping::PerSecond, position::Kinematic>,
+    Config<R, damping::PerSecond, position::SemiImplicit>,
+    Config<R, damping::AccelerateThenDamp, position::Euler>,
+    Config<R, damping::AccelerateThenDamp, position::Kinematic>,
+    Config<R, damping::AccelerateThenDamp, position::SemiImplicit>,
+    Config<R, damping::Exact, position::Euler>, Config<R, damping::Exact, position::Kinematic>,
+    Config<R, damping::Exact, position::SemiImplicit>, Config<R, damping::Exact, position::Exact>>;
+
+template <class... A, class... B>
+auto concatenate(std::tuple<A...>, std::tuple<B...>) -> std::tuple<A..., B...>;
+using EveryPairFloatAndDouble =
+    decltype(concatenate(std::declval<AllPairs<float>>(), std::declval<AllPairs<double>>()));
+
+// Steps of varied length (seconds), including a long one that takes Exact past |kt| = 1/4.
+template <class R>
+constexpr std::array<R, 5> durations = {R(1) / R(60), R(1) / R(30), R(0.1), R(0.005), R(0.7)};
+
+// 37 particles: two full vector blocks of 16 and a remainder of 5, so both loops run.
+constexpr std::size_t count = 37;
+
+}  // namespace
+
+TEST_CASE_TEMPLATE_DEFINE("uniform damping and gravity: system == Particles, bit for bit", C,
+                          uniform_equivalence) {
+  using R = typename C::real;
+  using D = typename C::damping_policy;
+  using P = typename C::position_policy;
+  using System = ParticleSystem<R, D, P>;
+  std::mt19937 engine(42);
+  const Vector3<R> acceleration{R(1.5), R(-9.807), R(0.25)};
+
+  System system(count);
+  system.set_acceleration(acceleration);
+  if constexpr (System::stores_damping) system.set_damping(R(0.6));
+  std::vector<Particle<R, D, P>> particles(count);
+  for (auto& particle : particles) {
+    particle.set_position(random_vector(engine, R(100)));
+    particle.set_velocity(random_vector(engine, R(30)));
+    particle.set_acceleration(acceleration);
+    if constexpr (System::stores_damping) particle.set_damping(R(0.6));
+    CHECK(system.spawn(particle.position(), particle.velocity()) != System::npos);
+  }
+  REQUIRE(matches(system, particles));
+  const Vector3<R> start = system.position(1);
+  for (int step = 0; step < 40; ++step) {
+    const R t = durations<R>[static_cast<std::size_t>(step) % durations<R>.size()];
+    system.step(t);
+    for (auto& particle : particles) particle.integrate(t);
+    REQUIRE(matches(system, particles));
+  }
+  // The particles moved: two systems that did nothing would match too.
+  CHECK_FALSE(system.position(1) == start);
+}
+TEST_CASE_TEMPLATE_APPLY(uniform_equivalence, EveryPairFloatAndDouble);
+
+TEST_CASE_TEMPLATE_DEFINE(
+    "per-particle damping, acceleration, mass and forces: system == Particles, bit for bit", C,
+    per_particle_equivalence) {
+  using R = typename C::real;
+  using D = typename C::damping_policy;
+  using P = typename C::position_policy;
+  constexpr bool damped = !std::is_empty_v<typename D::template State<R>>;
+  using System = std::conditional_t<
+      damped,
+      ParticleSystem<R, D, P, features::PerParticleDamping, features::PerParticleAcceleration,
+                     features::Forces>,
+      ParticleSystem<R, D, P, features::PerParticleAcceleration, features::Forces>>;
+  std::mt19937 engine(7);
+  std::uniform_real_distribution<R> damping(R(0), R(1));
+  std::uniform_real_distribution<R> mass(R(0.25), R(4));
+
+  System system(count);
+  std::vector<Particle<R, D, P>> particles(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    auto& particle = particles[i];
+    particle.set_position(random_vector(engine, R(100)));
+    particle.set_velocity(random_vector(engine, R(30)));
+    particle.set_acceleration(random_vector(engine, R(20)));
+    if constexpr (damped) particle.set_damping(i % 9 == 0 ? R(1) : damping(engine));
+    if (i % 6 == 0) {
+      particle.set_inverse_mass(R(0));  // immovable
+    } else {
+      particle.set_mass(mass(engine));
+    }
+    particle.add_force(random_vector(engine, R(5)));  // carried into the system by spawn
+    REQUIRE(system.spawn(particle) == i);
+  }
+  REQUIRE(matches(system, particles));
+  const Vector3<R> immovable_start = system.position(0);
+  const Vector3<R> movable_start = system.position(1);
+  for (int step = 0; step < 40; ++step) {
+    const R t = durations<R>[static_cast<std::size_t>(step) % durations<R>.size()];
+    system.step(t);
+    for (auto& particle : particles) particle.integrate(t);
+    REQUIRE(matches(system, particles));
+    for (std::size_t i = 0; i < count; ++i) {
+      REQUIRE(system.force_accumulator(i) == Vector3<R>{});  // cleared by the step
+      const Vector3<R> force = random_vector(engine, R(5));
+      system.add_force(i, force);
+      particles[i].add_force(force);
+    }
+  }
+  CHECK(same_bits(system.position(0), immovable_start));  // inverse mass 0: never moved
+  CHECK_FALSE(system.position(1) == movable_start);
+}
+TEST_CASE_TEMPLATE_APPLY(per_particle_equivalence, EveryPairFloatAndDouble);
+
+TEST_CASE_TEMPLATE("the step kernel over one index is the step", R, float, double) {
+  using System = ParticleSystem<R, damping::PerSecond, position::Kinematic,
+                                features::PerParticleAcceleration, features::Lifetime>;
+  std::mt19937 engine(3);
+  System stepped(40);
+  for (int i = 0; i < 40; ++i) {
+    const std::size_t index =
+        stepped.spawn(random_vector(engine, R(10)), random_vector(engine, R(10)));
+    stepped.set_acceleration(index, random_vector(engine, R(10)));
+    stepped.set_lifetime(index, R(0.05) * R(i + 1));
+  }
+  stepped.set_damping(R(0.5));
+  System by_index = stepped;
+  for (int step = 0; step < 10; ++step) {
+    stepped.step(R(0.1));
+    // What another engine's loop would do: the kernel for each i, then expiry on the host.
+    REQUIRE(by_index.begin_step(R(0.1)));
+    const auto parameters = by_index.step_parameters(R(0.1));
+    for (std::size_t i = 0; i < by_index.size(); ++i) {
+      System::step_particle(by_index.arrays(), i, parameters);
+    }
+    by_index.finish_step();
+    REQUIRE(stepped.size() == by_index.size());
+    for (std::size_t i = 0; i < stepped.size(); ++i) {
+      REQUIRE(same_bits(stepped.position(i), by_index.position(i)));
+      REQUIRE(same_bits(stepped.velocity(i), by_index.velocity(i)));
+      REQUIRE(same_bits(stepped.age(i), by_index.age(i)));
+    }
+  }
+  CHECK(stepped.size() < 40);  // some expired, so the comparison covered expiry
+}

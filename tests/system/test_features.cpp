@@ -1,0 +1,281 @@
+// What each compile-time choice stores and computes, spawning and killing, lifetimes,
+// capacity, spans, the staggered block, and the contracts of the setters.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <random>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <pointmass/particle_system.hpp>
+
+#include "system_support.hpp"
+
+namespace {
+
+using namespace pointmass;
+using pointmass::test::random_vector;
+using pointmass::test::same_bits;
+
+// Per-second damping that counts how often its per-step factors (the power function) run.
+struct CountingPerSecond {
+  template <Real R>
+  using State = damping::StoredDamping<R>;
+  template <Real R>
+  using Factors = damping::Retention<R>;
+  static inline int factor_calls = 0;
+
+  template <Real R, class T>
+  static Factors<R> factors(const State<R>& state, const T& t) noexcept {
+    ++factor_calls;
+    return damping::PerSecond::factors(state, t);
+  }
+  template <class V, class A, class T, class R>
+  static constexpr V velocity(const V& v0, const A& a, const T& t, const Factors<R>& f) noexcept {
+    return damping::PerSecond::velocity(v0, a, t, f);
+  }
+};
+
+template <class System>
+std::size_t stored_arrays(const System& system) {
+  const auto& a = system.arrays();
+  const void* pointers[] = {a.position_x,     a.position_y,     a.position_z,
+                            a.velocity_x,     a.velocity_y,     a.velocity_z,
+                            a.acceleration_x, a.acceleration_y, a.acceleration_z,
+                            a.inverse_mass,   a.force_x,        a.force_y,
+                            a.force_z,        a.damping,        a.age,
+                            a.lifetime};
+  return static_cast<std::size_t>(
+      std::count_if(std::begin(pointers), std::end(pointers), [](const void* p) { return p; }));
+}
+
+}  // namespace
+
+TEST_CASE_TEMPLATE("each feature stores its arrays, and nothing else", R, float, double) {
+  using Bare = ParticleSystem<R, damping::None, position::Euler>;
+  using Sparks = ParticleSystem<R>;  // uniform per-second damping and gravity
+  using Damped = ParticleSystem<R, damping::PerSecond, position::Euler,
+                                features::PerParticleDamping>;
+  using ExactDamped =
+      ParticleSystem<R, damping::Exact, position::Exact, features::PerParticleDamping>;
+  using Accelerated = ParticleSystem<R, damping::PerFrame, position::Euler,
+                                     features::PerParticleAcceleration>;
+  using Forced = ParticleSystem<R, damping::None, position::Euler, features::Forces>;
+  using Aging = ParticleSystem<R, damping::None, position::Euler, features::Lifetime>;
+  using Everything =
+      ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
+                     features::Forces, features::PerParticleAcceleration,
+                     features::PerParticleDamping>;
+
+  static_assert(Bare::storage_bytes_per_particle == 6 * sizeof(R));
+  static_assert(Sparks::storage_bytes_per_particle == 6 * sizeof(R));
+  static_assert(Damped::storage_bytes_per_particle == 7 * sizeof(R));
+  static_assert(ExactDamped::storage_bytes_per_particle == 8 * sizeof(R));  // d and ln d
+  static_assert(Accelerated::storage_bytes_per_particle == 9 * sizeof(R));
+  static_assert(Forced::storage_bytes_per_particle == 10 * sizeof(R));
+  static_assert(Aging::storage_bytes_per_particle == 8 * sizeof(R));
+  static_assert(Everything::storage_bytes_per_particle == 16 * sizeof(R));
+
+  // The accessors of what is not stored do not exist.
+  static_assert(!requires(Bare& s) { s.acceleration_x(); });
+  static_assert(!requires(Bare& s) { s.set_damping(R(1)); });  // damping::None has none
+  static_assert(!requires(Sparks& s) { s.set_damping(std::size_t{0}, R(1)); });
+  static_assert(requires(Sparks& s) { s.set_damping(R(1)); });
+  static_assert(requires(Damped& s) { s.damping_states(); });
+  static_assert(!requires(Damped& s) { s.set_damping(R(1)); });  // no uniform value either
+  static_assert(!requires(Sparks& s) { s.add_force(std::size_t{0}, Vector3<R>{}); });
+  static_assert(requires(Forced& s) { s.add_force(std::size_t{0}, Vector3<R>{}); });
+  static_assert(!requires(Sparks& s) { s.ages(); });
+  static_assert(requires(Aging& s) { s.ages(); });
+  static_assert(requires(Accelerated& s) { s.set_acceleration(std::size_t{0}, Vector3<R>{}); });
+  static_assert(!requires(Accelerated& s) { s.set_acceleration(Vector3<R>{}); });
+
+  // The same at run time: the block holds exactly those arrays.
+  CHECK(stored_arrays(Bare(10)) == 6);
+  CHECK(stored_arrays(Sparks(10)) == 6);
+  CHECK(stored_arrays(Damped(10)) == 7);
+  CHECK(stored_arrays(Accelerated(10)) == 9);
+  CHECK(stored_arrays(Forced(10)) == 10);
+  CHECK(stored_arrays(Aging(10)) == 8);
+  CHECK(stored_arrays(Everything(10)) == 16);
+  CHECK(Accelerated(10).arrays().inverse_mass == nullptr);
+  CHECK(Forced(10).arrays().acceleration_x == nullptr);
+}
+
+TEST_CASE_TEMPLATE("uniform damping computes its factors once per step, per-particle once each",
+                   R, float, double) {
+  ParticleSystem<R, CountingPerSecond> uniform(100);
+  ParticleSystem<R, CountingPerSecond, position::Euler, features::PerParticleDamping> each(100);
+  for (int i = 0; i < 100; ++i) {
+    uniform.spawn({}, {R(1), R(0), R(0)});
+    each.spawn({}, {R(1), R(0), R(0)});
+  }
+  uniform.set_damping(R(0.5));
+  CountingPerSecond::factor_calls = 0;
+  for (int step = 0; step < 3; ++step) uniform.step(R(0.1));
+  CHECK(CountingPerSecond::factor_calls == 3);
+  CountingPerSecond::factor_calls = 0;
+  for (int step = 0; step < 3; ++step) each.step(R(0.1));
+  CHECK(CountingPerSecond::factor_calls == 300);
+}
+
+TEST_CASE_TEMPLATE("arrays share one block, 64-byte aligned, staggered within their pages", R,
+                   float, double) {
+  using Everything = ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
+                                    features::Forces, features::PerParticleAcceleration,
+                                    features::PerParticleDamping>;
+  for (const std::size_t capacity : {std::size_t{1}, std::size_t{1000}, std::size_t{100000}}) {
+    CAPTURE(capacity);
+    ParticleSystem<R> sparks(capacity);
+    Everything everything(capacity);
+    for (const std::size_t arrays : {std::size_t{6}, std::size_t{16}}) {
+      CAPTURE(arrays);
+      const auto& a = sparks.arrays();
+      const auto& b = everything.arrays();
+      std::vector<std::uintptr_t> starts;
+      if (arrays == 6) {
+        for (const R* p : {a.position_x, a.position_y, a.position_z, a.velocity_x, a.velocity_y,
+                           a.velocity_z}) {
+          starts.push_back(reinterpret_cast<std::uintptr_t>(p));
+        }
+      } else {
+        for (const R* p :
+             {b.position_x, b.position_y, b.position_z, b.velocity_x, b.velocity_y, b.velocity_z,
+              b.acceleration_x, b.acceleration_y, b.acceleration_z, b.inverse_mass, b.force_x,
+              b.force_y, b.force_z, b.age, b.lifetime}) {
+          starts.push_back(reinterpret_cast<std::uintptr_t>(p));
+        }
+        starts.push_back(reinterpret_cast<std::uintptr_t>(b.damping));
+      }
+      std::set<std::uintptr_t> page_offsets;
+      for (const auto start : starts) {
+        CHECK(start % 64 == 0);
+        page_offsets.insert(start % 4096);
+      }
+      CHECK(page_offsets.size() == starts.size());  // no two arrays at the same page offset
+      // In one block, without overlap: each array ends before the next begins.
+      std::vector<std::uintptr_t> sorted = starts;
+      std::sort(sorted.begin(), sorted.end());
+      for (std::size_t k = 1; k < sorted.size(); ++k) {
+        CHECK(sorted[k] - sorted[k - 1] >= capacity * sizeof(R));
+        CHECK(sorted[k] - sorted[k - 1] <= capacity * sizeof(R) + 4096 + 448);
+      }
+    }
+  }
+}
+
+TEST_CASE_TEMPLATE("spawn, kill by index and by predicate: swap-remove", R, float, double) {
+  ParticleSystem<R> system(8);
+  for (int i = 0; i < 6; ++i) system.spawn({R(i), R(0), R(0)}, {});
+  REQUIRE(system.size() == 6);
+  system.kill(1);  // the last (x = 5) takes index 1
+  REQUIRE(system.size() == 5);
+  CHECK(system.position(1).x == R(5));
+  CHECK(system.position(4).x == R(4));
+  system.kill(4);  // the last itself
+  CHECK(system.size() == 4);
+  // Remaining x: 0, 5, 2, 3. Remove the even ones.
+  const std::size_t removed =
+      system.kill_if([&](std::size_t i) { return static_cast<int>(system.position(i).x) % 2 == 0; });
+  CHECK(removed == 2);
+  REQUIRE(system.size() == 2);
+  std::multiset<R> left{system.position(0).x, system.position(1).x};
+  CHECK(left == std::multiset<R>{R(3), R(5)});
+  CHECK(system.position_x().size() == 2);
+  system.clear();
+  CHECK(system.empty());
+  CHECK(system.capacity() == 8);
+}
+
+TEST_CASE_TEMPLATE("lifetime: particles age by each step and expire when age reaches lifetime", R,
+                   float, double) {
+  ParticleSystem<R, damping::None, position::Euler, features::Lifetime> system(4);
+  const std::size_t a = system.spawn({}, {});
+  const std::size_t b = system.spawn({R(1), R(0), R(0)}, {});
+  const std::size_t c = system.spawn({R(2), R(0), R(0)}, {});
+  system.set_lifetime(a, R(0.25));
+  system.set_lifetime(b, R(1));
+  CHECK(system.lifetime(c) == real_infinity<R>);
+  system.step(R(0.1));
+  system.step(R(0.1));
+  CHECK(system.size() == 3);
+  CHECK(system.age(0) == R(0.1) + R(0.1));
+  system.step(R(0.1));  // a: age 0.3 >= 0.25
+  REQUIRE(system.size() == 2);
+  std::multiset<R> left{system.position(0).x, system.position(1).x};
+  CHECK(left == std::multiset<R>{R(1), R(2)});
+  for (int i = 0; i < 10; ++i) system.step(R(0.1));  // b: age 1.3
+  REQUIRE(system.size() == 1);
+  CHECK(system.position(0).x == R(2));
+}
+
+TEST_CASE_TEMPLATE("capacity is reserved up front; a step allocates nothing; growth keeps data",
+                   R, float, double) {
+  ParticleSystem<R> system(64);
+  std::mt19937 engine(1);
+  for (int i = 0; i < 64; ++i) system.spawn(random_vector(engine, R(10)), random_vector(engine, R(10)));
+  const R* block = system.position_x().data();
+  for (int i = 0; i < 5; ++i) system.step(R(0.01));
+  CHECK(system.capacity() == 64);
+  CHECK(system.position_x().data() == block);
+
+  ParticleSystem<R> before = system;  // a copy, to compare after growing
+  system.spawn({}, {});               // beyond capacity: the block doubles
+  CHECK(system.capacity() == 128);
+  REQUIRE(system.size() == 65);
+  for (std::size_t i = 0; i < 64; ++i) {
+    REQUIRE(same_bits(system.position(i), before.position(i)));
+    REQUIRE(same_bits(system.velocity(i), before.velocity(i)));
+  }
+  ParticleSystem<R> moved = std::move(system);
+  CHECK(moved.size() == 65);
+  CHECK(system.size() == 0);  // NOLINT(bugprone-use-after-move): moved-from is empty
+}
+
+TEST_CASE_TEMPLATE("spans view the live particles and write through", R, float, double) {
+  ParticleSystem<R, damping::None, position::Euler, features::Forces> system(10);
+  for (int i = 0; i < 3; ++i) system.spawn({R(i), R(2 * i), R(3 * i)}, {});
+  CHECK(system.position_y().size() == 3);
+  CHECK(system.position_y()[2] == R(4));
+  system.velocity_x()[1] = R(10);
+  system.step(R(0.5));
+  CHECK(system.position(1).x == R(1) + R(10) * R(0.5));
+  system.inverse_masses()[1] = R(0);  // immovable from now on
+  system.step(R(0.5));
+  CHECK(system.position(1).x == R(6));
+}
+
+TEST_CASE_TEMPLATE("bad input is reported with the argument's name and value", R, float, double) {
+  using System = ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
+                                features::Forces>;
+  System system(4);
+  const R nan = std::numeric_limits<R>::quiet_NaN();
+  auto message = [](auto&& call) -> std::string {
+    try {
+      call();
+    } catch (const std::invalid_argument& error) {
+      return error.what();
+    }
+    return "(accepted)";
+  };
+  CHECK(message([&] { system.spawn({nan, R(0), R(0)}, {}); }).find("'position'") !=
+        std::string::npos);
+  CHECK(system.empty());  // nothing added
+  system.spawn({}, {});
+  CHECK(message([&] { system.set_damping(R(1.5)); }).find("'damping' = 1.5") != std::string::npos);
+  CHECK(message([&] { system.set_lifetime(0, R(0)); }).find("'seconds' = 0") != std::string::npos);
+  CHECK(message([&] { system.set_mass(0, R(-1)); }).find("'mass' = -1") != std::string::npos);
+  CHECK(message([&] { system.kill(7); }).find("'index' = 7") != std::string::npos);
+  CHECK(message([&] { system.set_acceleration({R(0), real_infinity<R>, R(0)}); })
+            .find("'acceleration'") != std::string::npos);
+#if POINTMASS_CHECKS
+  CHECK(message([&] { system.step(R(-0.1)); }).find("step: argument 'duration'") !=
+        std::string::npos);
+#endif
+  CHECK(system.size() == 1);
+  CHECK(system.damping() == R(1));
+}
