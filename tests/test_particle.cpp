@@ -1,1 +1,140 @@
+// Particle: its state, defaults, storage, infinite mass, zero duration and gravity helpers.
 #include <doctest/doctest.h>
+
+#include <limits>
+
+#include <pointmass/pointmass.hpp>
+
+#include "tolerance.hpp"
+
+using namespace pointmass;
+
+// A policy that needs no state costs no storage.
+static_assert(sizeof(Particle<float, damping::None>) < sizeof(Particle<float, damping::PerSecond>));
+static_assert(sizeof(Particle<float, damping::None>) == 13 * sizeof(float));
+static_assert(sizeof(Particle<float, damping::PerSecond>) == 14 * sizeof(float));
+static_assert(sizeof(Particle<double, damping::PerFrame, position::Kinematic>) ==
+              14 * sizeof(double));
+// ln d is kept beside d, so the exact policy computes no logarithm a step.
+static_assert(sizeof(Particle<float, damping::Exact>) == 15 * sizeof(float));
+static_assert(!Particle<float, damping::None>::stores_damping);
+static_assert(Particle<float>::stores_damping);
+// The seed's defaults.
+static_assert(std::is_same_v<Particle<float>::damping_policy, damping::PerSecond>);
+static_assert(std::is_same_v<Particle<float>::position_policy, position::Euler>);
+static_assert(std::is_trivially_copyable_v<Particle<float>>);
+// The concepts accept the library's policies.
+static_assert(DampingPolicy<damping::None> && DampingPolicy<damping::PerFrame> &&
+              DampingPolicy<damping::PerSecond> && DampingPolicy<damping::AccelerateThenDamp> &&
+              DampingPolicy<damping::Exact>);
+static_assert(PositionPolicyFor<position::Exact, damping::Exact>);
+static_assert(PositionPolicyFor<position::Exact, damping::None>);
+// The exact position needs the exact damping's factors: with eq. 3.6 it is not exact.
+static_assert(!PositionPolicyFor<position::Exact, damping::PerSecond>);
+
+TEST_CASE_TEMPLATE("a default particle is at rest at the origin, mass 1, undamped", R, float,
+                   double) {
+  const Particle<R> p;
+  CHECK(p.position() == Vector3<R>{});
+  CHECK(p.velocity() == Vector3<R>{});
+  CHECK(p.acceleration() == Vector3<R>{});
+  CHECK(p.force_accumulator() == Vector3<R>{});
+  CHECK(p.mass() == R(1));
+  CHECK(p.inverse_mass() == R(1));
+  CHECK(p.damping() == R(1));
+  CHECK(p.has_finite_mass());
+
+  // Undamped and at rest, it stays where it is.
+  Particle<R> q;
+  q.integrate(R(1));
+  CHECK(q.position() == Vector3<R>{});
+  CHECK(q.velocity() == Vector3<R>{});
+}
+
+TEST_CASE_TEMPLATE("mass and inverse mass", R, float, double) {
+  Particle<R> p;
+  p.set_mass(R(4));
+  CHECK(p.inverse_mass() == R(0.25));
+  CHECK(p.mass() == R(4));
+  p.set_inverse_mass(R(0.5));
+  CHECK(p.mass() == R(2));
+  p.set_inverse_mass(R(0));
+  CHECK_FALSE(p.has_finite_mass());
+  CHECK(p.mass() == std::numeric_limits<R>::infinity());
+  p.set_mass(std::numeric_limits<R>::infinity());  // infinite mass is allowed: immovable
+  CHECK(p.inverse_mass() == R(0));
+  CHECK_FALSE(p.has_finite_mass());
+}
+
+TEST_CASE_TEMPLATE("an infinite-mass particle does not move, whatever acts on it", R, float,
+                   double) {
+  Particle<R, damping::PerSecond, position::Kinematic> wall;
+  wall.set_position({R(1), R(2), R(3)});
+  wall.set_velocity({R(5), R(0), R(0)});
+  wall.set_acceleration(gravity(earth_gravity<R>));
+  wall.set_inverse_mass(R(0));
+  wall.add_force({R(1e6), R(1e6), R(1e6)});
+  wall.integrate(R(0.5));
+  CHECK(wall.position() == Vector3<R>{R(1), R(2), R(3)});
+  CHECK(wall.velocity() == Vector3<R>{R(5), R(0), R(0)});
+  CHECK(wall.force_accumulator() == Vector3<R>{});  // the force does not wait for later
+}
+
+TEST_CASE_TEMPLATE("a zero duration changes nothing", R, float, double) {
+  Particle<R, damping::PerFrame> p;  // per-frame damping would damp even a zero step
+  p.set_position({R(1), R(2), R(3)});
+  p.set_velocity({R(4), R(5), R(6)});
+  p.set_acceleration({R(0), R(-10), R(0)});
+  p.set_damping(R(0.5));
+  p.add_force({R(1), R(0), R(0)});
+  p.integrate(R(0));
+  CHECK(p.position() == Vector3<R>{R(1), R(2), R(3)});
+  CHECK(p.velocity() == Vector3<R>{R(4), R(5), R(6)});
+  CHECK(p.force_accumulator() == Vector3<R>{R(1), R(0), R(0)});  // kept for the next step
+}
+
+TEST_CASE_TEMPLATE("forces accumulate for one step and act through the inverse mass", R, float,
+                   double) {
+  Particle<R, damping::None, position::SemiImplicit> p;
+  p.set_mass(R(2));
+  p.add_force({R(2), R(0), R(0)});
+  p.add_force({R(0), R(4), R(0)});
+  CHECK(p.force_accumulator() == Vector3<R>{R(2), R(4), R(0)});
+  p.integrate(R(1));
+  CHECK(p.velocity() == Vector3<R>{R(1), R(2), R(0)});  // f / m t
+  p.integrate(R(1));                                    // no force now: constant velocity
+  CHECK(p.velocity() == Vector3<R>{R(1), R(2), R(0)});
+  p.add_force({R(2), R(0), R(0)});
+  p.clear_accumulator();
+  CHECK(p.force_accumulator() == Vector3<R>{});
+}
+
+TEST_CASE_TEMPLATE("gravity helpers", R, float, double) {
+  CHECK(gravity<R>() == Vector3<R>{R(0), R(-9.807), R(0)});
+  CHECK(gravity(shooter_gravity<R>) == Vector3<R>{R(0), R(-15), R(0)});
+  CHECK(gravity(driving_gravity<R>) == Vector3<R>{R(0), R(-20), R(0)});
+  CHECK(gravity(R(3.7)) == Vector3<R>{R(0), R(-3.7), R(0)});
+  // f = m g gives the same acceleration for any mass.
+  for (const R mass : {R(0.1), R(2), R(200)}) {
+    Particle<R, damping::None, position::Kinematic> p;
+    p.set_mass(mass);
+    p.set_acceleration(gravity<R>());
+    p.integrate(R(1));
+    CHECK(p.velocity().y == R(-9.807));
+  }
+}
+
+TEST_CASE("the scenes hold the reference engine's shots") {
+  const auto& shots = scenes::ballistic_shots<double>;
+  REQUIRE(shots.size() == 4);
+  CHECK(shots[0].name == "pistol");
+  CHECK(shots[1].mass == 200.0);
+  CHECK(shots[2].acceleration == Vector3<double>{0, 0.6, 0});
+  CHECK(shots[3].velocity == Vector3<double>{0, 0, 100});
+  Particle<double> p;
+  scenes::launch(p, shots[1]);
+  CHECK(p.position() == Vector3<double>{0, 1.5, 0});
+  CHECK(p.velocity() == Vector3<double>{0, 30, 40});
+  CHECK(p.mass() == 200.0);
+  CHECK(p.damping() == 0.99);
+}

@@ -60,19 +60,10 @@ struct ContractViolation {
   const char* requirement;  ///< what the argument must satisfy
   long double value[3];     ///< the offending value (a vector uses all three)
   int components;           ///< 1 for a number, 3 for a vector
+  char text[128];           ///< the value as written in its own precision: "-2.5", "(0, inf, 0)"
 };
 
 using ContractHandler = void (*)(const ContractViolation&);
-
-namespace detail {
-
-inline void append_number(std::string& out, long double x) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
-  out.append(buffer, result.ptr);
-}
-
-}  // namespace detail
 
 /// "set_mass: argument 'mass' = -1 must be > 0 and not NaN".
 inline std::string describe(const ContractViolation& violation) {
@@ -81,16 +72,7 @@ inline std::string describe(const ContractViolation& violation) {
   message += ": argument '";
   message += violation.argument;
   message += "' = ";
-  if (violation.components == 1) {
-    detail::append_number(message, violation.value[0]);
-  } else {
-    message += '(';
-    for (int i = 0; i < violation.components; ++i) {
-      if (i != 0) message += ", ";
-      detail::append_number(message, violation.value[i]);
-    }
-    message += ')';
-  }
+  message += violation.text;
   message += " must be ";
   message += violation.requirement;
   return message;
@@ -122,28 +104,51 @@ inline ContractHandler contract_handler() noexcept { return detail::contract_han
 
 namespace detail {
 
-// Out of line and cold, so that a check costs the hot path one compare and one branch.
-[[gnu::cold]] [[gnu::noinline]] inline void report_violation(const char* function,
-                                                             const char* argument,
-                                                             const char* requirement,
-                                                             long double x, long double y,
-                                                             long double z, int components) {
-  const ContractViolation violation{function, argument, requirement, {x, y, z}, components};
+// Appends x, in the shortest form that reads back as the same T, to text at *used.
+template <class T>
+void append_number(char (&text)[128], std::size_t& used, T x) {
+  const auto result = std::to_chars(text + used, text + sizeof text - 1, x);
+  used = static_cast<std::size_t>(result.ptr - text);
+}
+inline void append_text(char (&text)[128], std::size_t& used, const char* part) {
+  while (*part != '\0' && used + 1 < sizeof text) text[used++] = *part++;
+}
+
+[[gnu::cold]] inline void report(ContractViolation& violation, std::size_t used) {
+  violation.text[used] = '\0';
   pointmass::contract_handler()(violation);
 }
 
+// Out of line and cold, so that a check costs the hot path one compare and one branch.
 template <class T>
-[[gnu::cold]] inline void report_scalar(const char* function, const char* argument,
-                                        const char* requirement, T value) {
-  report_violation(function, argument, requirement, static_cast<long double>(value), 0.0L,
-                   0.0L, 1);
+[[gnu::cold]] [[gnu::noinline]] void report_scalar(const char* function, const char* argument,
+                                                   const char* requirement, T value) {
+  ContractViolation violation{function, argument, requirement,
+                              {static_cast<long double>(value), 0.0L, 0.0L}, 1, {}};
+  std::size_t used = 0;
+  append_number(violation.text, used, value);
+  report(violation, used);
 }
 
 template <class V>
-[[gnu::cold]] inline void report_vector(const char* function, const char* argument,
-                                        const char* requirement, const V& value) {
-  report_violation(function, argument, requirement, static_cast<long double>(value.x),
-                   static_cast<long double>(value.y), static_cast<long double>(value.z), 3);
+[[gnu::cold]] [[gnu::noinline]] void report_vector(const char* function, const char* argument,
+                                                   const char* requirement, const V& value) {
+  ContractViolation violation{function,
+                              argument,
+                              requirement,
+                              {static_cast<long double>(value.x), static_cast<long double>(value.y),
+                               static_cast<long double>(value.z)},
+                              3,
+                              {}};
+  std::size_t used = 0;
+  append_text(violation.text, used, "(");
+  append_number(violation.text, used, value.x);
+  append_text(violation.text, used, ", ");
+  append_number(violation.text, used, value.y);
+  append_text(violation.text, used, ", ");
+  append_number(violation.text, used, value.z);
+  append_text(violation.text, used, ")");
+  report(violation, used);
 }
 
 }  // namespace detail
