@@ -13,8 +13,8 @@
 //   AnchoredBungee       the same with d = p - anchor
 //   Buoyancy             +Y: rho V g s, s = clamp((h + D - y) / (2 D), 0, 1), the submerged
 //                        fraction of a body of half-height D at height y, water surface at h
-//   StiffSpring          the exact mean force of a damped spring to an anchor over the step
-//                        (closed-form damped harmonic oscillator; see below)
+//   StiffSpring          a damped spring to an anchor, solved in closed form: the force that
+//                        moves the body to the exact oscillator's position over the step
 //
 // Where the reference engine differs (its users' bug reports; each is pinned by a test):
 //   * its spring takes |(|d| - L)|, so a compressed spring pulls instead of pushing;
@@ -458,14 +458,20 @@ constexpr OscillatorState<R> damped_oscillator(R w0_squared, R gamma, const Vect
 }
 
 /// A stiff damped spring from a body to a fixed anchor (rest length 0), solved in closed form
-/// instead of integrated: for a body of mass m, x = p - anchor obeys
-/// m x'' = -k x - c x'. The force added for a step of duration t is the exact mean of the
-/// spring's force over the step, m (v(t) - v0) / t, with v(t) from `damped_oscillator`: the
-/// impulse the spring really gives. So a body that feels only this spring and has no damping
-/// ends each step with the exact velocity, whatever the step and however stiff the spring,
-/// and the force is bounded (|v(t) - v0| never exceeds what the oscillator's energy allows),
-/// where integrating k x explicitly explodes once sqrt(k/m) t > 2. Under-, critically and
-/// over-damped springs alike; no NaN, nothing on an immovable body, nothing for t = 0.
+/// instead of integrated: for a body of mass m, x = p - anchor obeys m x'' = -k x - c x'.
+/// For a step of duration t the generator takes the exact position x(t) from
+/// `damped_oscillator` and adds the force that brings the body there:
+///   f = m [ (x(t) - x0) / t - v0 ] / t,
+/// so that a body with position::SemiImplicit and damping::None, feeling only this spring,
+/// ends every step exactly where the closed form puts it (p1 = p0 + v1 t with v1 the mean
+/// velocity over the step, (x(t) - x0) / t). This is what the reference engine's "fake"
+/// spring intends, without its NaN (over-damped) and its silence (critically damped).
+/// Stability, per step of angular frequency w0 = sqrt(k/m) (measured by the spectral radius
+/// of the step's 2x2 map, see docs/forces.md): stable for w0 t <= pi whatever the damping, and
+/// for every step (scanned to w0 t = 100) once the damping ratio c / (2 sqrt(k m)) >= 0.05;
+/// an undamped stiff spring has windows beyond w0 t = pi where it grows (by at most 13% a
+/// step). Integrating k x explicitly instead (AnchoredSpring, symplectic Euler) is stable only
+/// for w0 t < 2. No NaN, nothing on an immovable body, nothing for t = 0.
 template <Real R>
 class StiffSpring {
  public:
@@ -506,7 +512,8 @@ class StiffSpring {
                              R duration) const noexcept {
     if (!(inverse_mass > R(0)) || !(duration > R(0))) return {};
     const OscillatorState<R> s = exact_state(p, v, inverse_mass, duration);
-    return (s.velocity - v) / (inverse_mass * duration);
+    const Vector3<R> mean_velocity = (s.position - p) / duration;
+    return (mean_velocity - v) / (inverse_mass * duration);
   }
   template <PlainBody<R> B>
   constexpr void update_force(B& body, R duration) const {
