@@ -1,0 +1,2 @@
+# benchmarks/units_cost.cpp compares the plain and the SI particle: it needs pointmass::units.
+target_link_libraries(units_cost PRIVATE pointmass::units)

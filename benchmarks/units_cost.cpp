@@ -1,0 +1,126 @@
+// The cost of Boost.Units: the same scene through the plain particle and the SI particle, in
+// one run, and the ratio of their median times (1.00 = free).
+//
+// The scene: 1024 particles launched with the four ballistic shots in turn, each given a push
+// (add_force) and integrated for 150 frames of 1/30 s. The SI particle stores raw numbers and
+// takes and returns quantities; the comparison shows whether that boundary costs anything.
+//
+//   build/<dir>/benchmarks/units_cost --benchmark_repetitions=9
+// prints, after Google Benchmark's table, one line per configuration:
+//   ratio SI/plain <configuration>: <median SI time / median plain time>
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <pointmass/particle.hpp>
+#include <pointmass/scenes.hpp>
+#include <pointmass/units.hpp>
+
+namespace pm = pointmass;
+namespace si = boost::units::si;
+
+namespace {
+
+constexpr int particle_count = 1024;
+constexpr int frames = 150;
+
+template <class R, class D, class P>
+void launch(pm::Particle<R, D, P>& particle, const pm::scenes::BallisticShot<R>& shot) {
+  pm::scenes::launch(particle, shot);
+}
+template <class R, class D, class P>
+void launch(pm::units::Particle<R, D, P>& particle, const pm::scenes::BallisticShot<R>& shot) {
+  particle.set_position(pm::scenes::ballistic_origin<R> * si::meters);
+  particle.set_velocity(shot.velocity * si::meters_per_second);
+  particle.set_acceleration(shot.acceleration * si::meters_per_second_squared);
+  particle.set_mass(shot.mass * si::kilograms);
+  if constexpr (pm::units::Particle<R, D, P>::stores_damping) particle.set_damping(shot.damping);
+}
+
+template <class Particle, class R>
+void run_scene(benchmark::State& state, const auto& frame, const auto& push) {
+  std::vector<Particle> particles(particle_count);
+  for (auto _ : state) {
+    state.PauseTiming();
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+      launch(particles[i], pm::scenes::ballistic_shots<R>[i % 4]);
+    }
+    state.ResumeTiming();
+    for (int f = 0; f < frames; ++f) {
+      for (auto& particle : particles) {
+        particle.add_force(push);
+        particle.integrate(frame);
+      }
+    }
+    benchmark::DoNotOptimize(particles.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * particle_count * frames);
+}
+
+template <class R, class D, class P>
+void plain(benchmark::State& state) {
+  run_scene<pm::Particle<R, D, P>, R>(state, R(1) / R(30), pm::Vector3<R>{R(0.5), R(-2), R(1)});
+}
+template <class R, class D, class P>
+void with_units(benchmark::State& state) {
+  run_scene<pm::units::Particle<R, D, P>, R>(
+      state, (R(1) / R(30)) * si::seconds, pm::Vector3<R>{R(0.5), R(-2), R(1)} * si::newtons);
+}
+
+using pm::damping::Exact;
+using pm::damping::None;
+using pm::damping::PerSecond;
+using pm::position::Euler;
+using pm::position::Kinematic;
+
+#define POINTMASS_PAIR(name, ...)                                                      \
+  BENCHMARK_TEMPLATE(plain, __VA_ARGS__)->Name("plain/" name)->Unit(benchmark::kMicrosecond); \
+  BENCHMARK_TEMPLATE(with_units, __VA_ARGS__)->Name("si/" name)->Unit(benchmark::kMicrosecond)
+
+POINTMASS_PAIR("float PerSecond Euler", float, PerSecond, Euler);
+POINTMASS_PAIR("double PerSecond Euler", double, PerSecond, Euler);
+POINTMASS_PAIR("float None Kinematic", float, None, Kinematic);
+POINTMASS_PAIR("double Exact Exact", double, Exact, pm::position::Exact);
+
+/// The console table as usual, plus the SI/plain ratio of each configuration's median time
+/// (or of its single run, without repetitions).
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& run : runs) {
+      const bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
+      if (median || (run.run_type == Run::RT_Iteration && run.repetitions <= 1)) {
+        times_[run.run_name.function_name] = run.GetAdjustedRealTime();
+      }
+    }
+  }
+  void Finalize() override {
+    ConsoleReporter::Finalize();
+    for (const auto& [name, time] : times_) {
+      if (name.rfind("plain/", 0) != 0) continue;
+      const std::string configuration = name.substr(6);
+      const auto si_time = times_.find("si/" + configuration);
+      if (si_time == times_.end()) continue;
+      std::printf("ratio SI/plain %-24s %.3f\n", (configuration + ":").c_str(),
+                  si_time->second / time);
+    }
+  }
+
+ private:
+  std::map<std::string, double> times_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+}

@@ -1,0 +1,255 @@
+// pointmass/units.hpp — the particle with Boost.Units SI quantities: a dimension error is a
+// compile error, at no run-time cost. The one public header that needs Boost (headers only).
+//
+//   pointmass::units::Particle<double>                          SI quantities of double
+//   pointmass::units::Particle<float, damping::PerFrame, position::Kinematic>
+//
+// Every input and output is a quantity of the particle's Real:
+//
+//   member / argument                     type                                   unit
+//   position()         set_position        Vector3<units::length<R>>              m
+//   velocity()         set_velocity        Vector3<units::velocity<R>>            m/s
+//   acceleration()     set_acceleration    Vector3<units::acceleration<R>>        m/s^2
+//   force_accumulator()  add_force         Vector3<units::force<R>>               N
+//   mass()             set_mass            units::mass<R>                         kg
+//   inverse_mass()     set_inverse_mass    units::inverse_mass<R>                 1/kg
+//   integrate(duration)                    units::time<R>                         s
+//   damping()          set_damping         R, a dimensionless fraction kept per second
+//                                          (per frame for damping::PerFrame)
+//
+// The same class template as the plain pointmass::Particle (BasicParticle) with a different
+// QuantitySet, so the same policies give the same results, bit for bit. The particle stores
+// raw numbers (a Boost.Units quantity is not trivially copyable, which costs when it is
+// passed through a call that is not inlined) and converts at its public boundary; the step
+// itself runs on Vector3s of length, velocity and acceleration and on a time quantity, so
+// `p + v t + a t^2 / 2` and every other policy equation is checked for dimensions when it
+// is instantiated here. No quantity is turned into a raw number inside the step, except the
+// exponent of d^t, which is the duration divided by one second (TimeTraits below).
+//
+// Building a vector of quantities: a Vector3 of numbers times a unit,
+//   using namespace boost::units;
+//   particle.set_velocity(pointmass::Vector3<double>{0, 30, 40} * si::meters_per_second);
+//   particle.integrate(0.01 * si::seconds);
+//
+// What is checked, at compile time: a quantity of the wrong dimension anywhere (a velocity
+// given as a position, a force given as an acceleration, a duration in metres); a Vector3 of
+// quantities of another Real (Vector3<length<double>> for a float particle, and the
+// reverse); a scalar quantity of a wider Real narrowed to the particle's (a double mass or
+// duration for a float particle). Boost.Units converts a scalar float quantity to a double
+// one implicitly, since that loses nothing. See docs/units.md for what the errors look like.
+#pragma once
+
+#include <type_traits>
+
+#include <boost/units/quantity.hpp>
+#include <boost/units/systems/si/acceleration.hpp>
+#include <boost/units/systems/si/dimensionless.hpp>
+#include <boost/units/systems/si/force.hpp>
+#include <boost/units/systems/si/length.hpp>
+#include <boost/units/systems/si/mass.hpp>
+#include <boost/units/systems/si/time.hpp>
+#include <boost/units/systems/si/velocity.hpp>
+
+#include "damping.hpp"
+#include "particle.hpp"
+#include "position.hpp"
+#include "quantities.hpp"
+#include "real.hpp"
+#include "vector3.hpp"
+
+namespace pointmass::units {
+
+namespace bu = ::boost::units;
+
+/// The SI unit of inverse mass, 1/kg.
+using inverse_kilogram_unit = bu::divide_typeof_helper<bu::si::dimensionless, bu::si::mass>::type;
+
+template <Real R>
+using length = bu::quantity<bu::si::length, R>;
+template <Real R>
+using velocity = bu::quantity<bu::si::velocity, R>;
+template <Real R>
+using acceleration = bu::quantity<bu::si::acceleration, R>;
+template <Real R>
+using time = bu::quantity<bu::si::time, R>;
+template <Real R>
+using mass = bu::quantity<bu::si::mass, R>;
+template <Real R>
+using inverse_mass = bu::quantity<inverse_kilogram_unit, R>;
+template <Real R>
+using force = bu::quantity<bu::si::force, R>;
+
+/// The QuantitySet of Boost.Units SI quantities of R.
+template <Real R>
+struct SiQuantities {
+  using real = R;
+  using length = units::length<R>;
+  using velocity = units::velocity<R>;
+  using acceleration = units::acceleration<R>;
+  using time = units::time<R>;
+  using mass = units::mass<R>;
+  using inverse_mass = units::inverse_mass<R>;
+  using force = units::force<R>;
+
+  /// The quantity of type Q (one of the above) whose number, in SI units, is `raw`.
+  template <class Q>
+  POINTMASS_HD static constexpr Q make(R raw) noexcept {
+    return Q::from_value(raw);
+  }
+  /// The number a quantity holds, in SI units.
+  template <class Unit>
+  POINTMASS_HD static constexpr R raw(const bu::quantity<Unit, R>& quantity) noexcept {
+    return quantity.value();
+  }
+};
+
+// The dimensions the step relies on, checked once here: the policies' equations produce
+// exactly these types, so a policy that got a dimension wrong fails to compile.
+static_assert(std::is_same_v<decltype(velocity<double>{} * time<double>{}), length<double>>);
+static_assert(std::is_same_v<decltype(acceleration<double>{} * time<double>{}), velocity<double>>);
+static_assert(std::is_same_v<decltype(force<double>{} * inverse_mass<double>{}),
+                             acceleration<double>>);
+
+namespace detail {
+
+/// The unit and the number type of a quantity (void and T itself for a plain T).
+template <class T>
+struct QuantityParts {
+  using unit = void;
+  using real = T;
+};
+template <class Unit, class Y>
+struct QuantityParts<bu::quantity<Unit, Y>> {
+  using unit = Unit;
+  using real = Y;
+};
+template <class Given, class Expected>
+inline constexpr bool same_unit_v =
+    std::is_same_v<typename QuantityParts<Given>::unit, typename QuantityParts<Expected>::unit>;
+template <class Given, class Expected>
+inline constexpr bool same_real_v =
+    std::is_same_v<typename QuantityParts<Given>::real, typename QuantityParts<Expected>::real>;
+
+}  // namespace detail
+
+// A wrong argument would otherwise fail with "cannot convert Vector3<quantity<unit<list<dim<
+// length_base_dimension, ...>>>>>" and a page of template arguments. Each setter below has a
+// catch-all overload that is chosen only for a wrong type and fails with one line that names
+// the function, the quantity it expects and its unit. It also catches a scalar quantity of
+// another Real, which Boost.Units would otherwise convert implicitly from float to double.
+#define POINTMASS_UNITS_REJECT(function, Expected, given, what)                                \
+  static_assert(detail::same_unit_v<given, Expected>,                                         \
+                #function ": wrong dimension: the argument must be " what);                   \
+  static_assert(!detail::same_unit_v<given, Expected> || detail::same_real_v<given, Expected>, \
+                #function ": the argument's quantities are of another Real than the "          \
+                "particle's (float and double are not mixed)")
+
+/// A particle whose every input and output is an SI quantity of R (see the file comment).
+/// BasicParticle over SiQuantities<R>, plus one overload per setter that turns a wrong
+/// argument type into a one-line error message.
+template <Real R, DampingPolicy D = damping::PerSecond, PositionPolicyFor<D> P = position::Euler>
+class Particle : public BasicParticle<SiQuantities<R>, D, P> {
+  using Base = BasicParticle<SiQuantities<R>, D, P>;
+
+ public:
+  using typename Base::acceleration_type;
+  using typename Base::force_type;
+  using typename Base::inverse_mass_type;
+  using typename Base::length_type;
+  using typename Base::mass_type;
+  using typename Base::time_type;
+  using typename Base::velocity_type;
+
+  constexpr Particle() noexcept = default;
+
+  using Base::add_force;
+  using Base::integrate;
+  using Base::set_acceleration;
+  using Base::set_inverse_mass;
+  using Base::set_mass;
+  using Base::set_position;
+  using Base::set_velocity;
+
+  // The overloads below are chosen only for an argument of the wrong type; each fails with
+  // a static_assert naming what was expected.
+  template <class T>
+    requires(!std::is_same_v<T, length_type>)
+  void set_position(const Vector3<T>&) {
+    POINTMASS_UNITS_REJECT(set_position, length_type, T,
+                           "a Vector3 of units::length<Real> (metres)");
+  }
+  template <class T>
+    requires(!std::is_same_v<T, velocity_type>)
+  void set_velocity(const Vector3<T>&) {
+    POINTMASS_UNITS_REJECT(set_velocity, velocity_type, T,
+                           "a Vector3 of units::velocity<Real> (metres per second)");
+  }
+  template <class T>
+    requires(!std::is_same_v<T, acceleration_type>)
+  void set_acceleration(const Vector3<T>&) {
+    POINTMASS_UNITS_REJECT(set_acceleration, acceleration_type, T,
+                           "a Vector3 of units::acceleration<Real> (metres per second squared)");
+  }
+  template <class T>
+    requires(!std::is_same_v<T, force_type>)
+  void add_force(const Vector3<T>&) {
+    POINTMASS_UNITS_REJECT(add_force, force_type, T, "a Vector3 of units::force<Real> (newtons)");
+  }
+  template <class T>
+    requires(!std::is_same_v<T, mass_type>)
+  void set_mass(const T&) {
+    POINTMASS_UNITS_REJECT(set_mass, mass_type, T, "a units::mass<Real> (kilograms)");
+  }
+  template <class T>
+    requires(!std::is_same_v<T, inverse_mass_type>)
+  void set_inverse_mass(const T&) {
+    POINTMASS_UNITS_REJECT(set_inverse_mass, inverse_mass_type, T,
+                           "a units::inverse_mass<Real> (per kilogram)");
+  }
+  template <class T>
+    requires(!std::is_same_v<T, time_type>)
+  void integrate(const T&) {
+    POINTMASS_UNITS_REJECT(integrate, time_type, T, "a units::time<Real> (seconds)");
+  }
+};
+
+#undef POINTMASS_UNITS_REJECT
+
+}  // namespace pointmass::units
+
+namespace pointmass {
+
+/// A Vector3 of numbers times a unit is a Vector3 of quantities:
+/// `Vector3<double>{0, 30, 40} * si::meters_per_second`. (More specialised than both
+/// Boost.Units' `number * unit` and Vector3's `vector * scalar`, which would otherwise be
+/// ambiguous.)
+template <class T, class Dim, class System>
+POINTMASS_HD constexpr Vector3<::boost::units::quantity<::boost::units::unit<Dim, System>, T>>
+operator*(const Vector3<T>& v, const ::boost::units::unit<Dim, System>& unit) noexcept {
+  return {v.x * unit, v.y * unit, v.z * unit};
+}
+template <class T, class Dim, class System>
+POINTMASS_HD constexpr Vector3<::boost::units::quantity<::boost::units::unit<Dim, System>, T>>
+operator*(const ::boost::units::unit<Dim, System>& unit, const Vector3<T>& v) noexcept {
+  return {v.x * unit, v.y * unit, v.z * unit};
+}
+
+/// A quantity's number is its value type.
+template <class Unit, class Y>
+struct ScalarOf<::boost::units::quantity<Unit, Y>> {
+  using type = Y;
+};
+
+/// A time quantity in seconds: t / (1 s), a dimensionless ratio, as a number (the exponent of
+/// the per-second damping d^t).
+template <class Y>
+struct TimeTraits<::boost::units::quantity<::boost::units::si::time, Y>> {
+  POINTMASS_HD static constexpr Y seconds(
+      const ::boost::units::quantity<::boost::units::si::time, Y>& t) noexcept {
+    const ::boost::units::quantity<::boost::units::si::dimensionless, Y> ratio =
+        t / (Y(1) * ::boost::units::si::second);
+    return ratio.value();
+  }
+};
+
+}  // namespace pointmass

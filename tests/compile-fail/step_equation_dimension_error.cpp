@@ -1,0 +1,22 @@
+// A position policy whose equation is dimensionally wrong (p0 + v0 t^2: metres plus
+// metre-seconds) compiles on plain numbers but not in the SI particle's step.
+// expected-error: operator+
+// expected-error: invalid operands to binary expression
+#include <pointmass/units.hpp>
+
+namespace si = boost::units::si;
+
+struct UserWrongPosition {
+  template <class P, class V, class A, class T, class F>
+  static constexpr P position(const P& p0, const V& v0, const V&, const A&, const T& t,
+                              const F&) noexcept {
+    return p0 + v0 * t * t;
+  }
+};
+
+int main() {
+  pointmass::Particle<double, pointmass::damping::PerSecond, UserWrongPosition> plain;
+  plain.integrate(0.033);  // compiles: plain numbers carry no dimension
+  pointmass::units::Particle<double, pointmass::damping::PerSecond, UserWrongPosition> checked;
+  checked.integrate(0.033 * si::seconds);  // does not
+}
