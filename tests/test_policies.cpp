@@ -227,6 +227,31 @@ TEST_CASE_TEMPLATE("eq. 3.6 and the listing's form differ by a t (d^t - 1)", R, 
   CHECK(close(listing.velocity() - text.velocity(), a * (t * (kept - R(1))), R(64), R(10)));
 }
 
+TEST_CASE("eq. 3.6 and the listing's form err by the same amount, opposite in sign") {
+  // Exact: v1 = v0 d^t + a t phi1(kt); eq. 3.6 errs by a t (1 - phi1) ~ -a t kt / 2, the
+  // listing by a t (d^t - phi1) ~ +a t kt / 2.
+  using R = double;
+  const R t = 1e-3;
+  Particle<R, damping::PerSecond> text;
+  Particle<R, damping::AccelerateThenDamp> listing;
+  Particle<R, damping::Exact> exact;
+  text.set_damping(0.5);
+  listing.set_damping(0.5);
+  exact.set_damping(0.5);
+  text.set_acceleration({0, -10, 0});
+  listing.set_acceleration({0, -10, 0});
+  exact.set_acceleration({0, -10, 0});
+  text.integrate(t);
+  listing.integrate(t);
+  exact.integrate(t);
+  const R text_error = text.velocity().y - exact.velocity().y;
+  const R listing_error = listing.velocity().y - exact.velocity().y;
+  CHECK(text_error != 0);
+  CHECK(listing_error / text_error == doctest::Approx(-1).epsilon(0.01));
+  // ... and the size is a t kt / 2: 10 * 1e-3 * (1e-3 ln 2) / 2.
+  CHECK(std::abs(text_error) == doctest::Approx(10 * t * t * std::log(2.0) / 2).epsilon(0.01));
+}
+
 TEST_CASE("the exact policies at the limits of damping: no NaN, the right limit") {
   using R = double;
   for (const R d : {1.0, 1.0 - 1e-7, 0.5, 1e-6, 0.0}) {

@@ -4,6 +4,7 @@
 
 #include "config.hpp"
 #include "damping.hpp"
+#include "forces.hpp"
 #include "gravity.hpp"
 #include "particle.hpp"
 #include "position.hpp"
