@@ -70,28 +70,32 @@ struct SemiImplicit {
 
 namespace detail {
 
-/// 1 / (n + Offset)! for n = 0 .. 13, computed at compile time.
+/// How many terms of the phi series reach R's precision for |x| < 1/4: the first omitted
+/// term, 4^-n / (n + 2)!, is below a quarter of an ulp (float 7, double 12, long double 14).
+template <class R>
+inline constexpr int phi_terms = sizeof(R) == sizeof(float) ? 7 : sizeof(R) == sizeof(double) ? 12 : 14;
+
+/// 1 / (n + Offset)! for n = 0 .. phi_terms<R> - 1, computed at compile time.
 template <int Offset, class R>
-constexpr std::array<R, 14> make_phi_coefficients() noexcept {
-  std::array<R, 14> coefficients{};
+constexpr std::array<R, phi_terms<R>> make_phi_coefficients() noexcept {
+  std::array<R, phi_terms<R>> coefficients{};
   R factorial = R(1);
   for (int n = 2; n <= Offset; ++n) factorial *= R(n);
-  for (int n = 0; n < 14; ++n) {
+  for (int n = 0; n < phi_terms<R>; ++n) {
     coefficients[static_cast<std::size_t>(n)] = R(1) / factorial;
     factorial *= R(n + Offset + 1);
   }
   return coefficients;
 }
 template <int Offset, class R>
-inline constexpr std::array<R, 14> phi_coefficients = make_phi_coefficients<Offset, R>();
+inline constexpr std::array<R, phi_terms<R>> phi_coefficients = make_phi_coefficients<Offset, R>();
 
-/// phi_Offset(x) = sum_{n>=0} x^n / (n + Offset)!, by Horner's rule. For |x| < 1/4 the 14
-/// terms reach long double precision (the first omitted term is below 4^-14 / 15!).
+/// phi_Offset(x) = sum_{n>=0} x^n / (n + Offset)!, by Horner's rule, for |x| < 1/4.
 template <int Offset, class R>
 POINTMASS_HD constexpr R phi_series(R x) noexcept {
   const auto& c = phi_coefficients<Offset, R>;
-  R sum = c[13];
-  for (int n = 12; n >= 0; --n) sum = sum * x + c[static_cast<std::size_t>(n)];
+  R sum = c[phi_terms<R> - 1];
+  for (int n = phi_terms<R> - 2; n >= 0; --n) sum = sum * x + c[static_cast<std::size_t>(n)];
   return sum;
 }
 
@@ -106,6 +110,16 @@ POINTMASS_HD constexpr R log_kept(const F& factors) noexcept {
   }
 }
 
+/// phi1(x) = (e^x - 1) / x: from the factors where the damping computed it, else the series.
+template <class R, class F>
+POINTMASS_HD constexpr R phi1_of(const F& factors, R x) noexcept {
+  if constexpr (requires { factors.phi1; }) {
+    return factors.phi1;
+  } else {
+    return phi_series<1>(x);
+  }
+}
+
 template <class F>
 concept ExactFactors = std::is_empty_v<F> || requires(const F& f) { f.log_kept; };
 
@@ -115,7 +129,8 @@ concept ExactFactors = std::is_empty_v<F> || requires(const F& f) { f.log_kept; 
 ///   p(t) = p0 + v0 t phi1(kt) + a t^2 phi2(kt),   phi2(x) = (e^x - 1 - x) / x^2,
 /// and, since v1 - v0 - a t = k (v0 t phi1 + a t^2 phi2), equivalently
 ///   p(t) = p0 + (v1 - v0 - a t) / k.
-/// For |kt| < 1/4 the series of phi1 and phi2 are used (no cancellation); beyond, the second
+/// For |kt| < 1/4 phi1 comes from the damping's factors and phi2 from its series (no
+/// cancellation); beyond, the second
 /// form, which needs no transcendental function (its cancellation costs at most a factor
 /// 1 / |kt| < 4 in relative rounding error).
 /// Without damping (k = 0) it is the Kinematic form. Needs damping::Exact or damping::None,
@@ -128,7 +143,7 @@ struct Exact {
     using R = scalar_t<T>;
     const R x = detail::log_kept<R>(factors);
     if (real_abs(x) < R(0.25)) {
-      return p0 + v0 * (t * detail::phi_series<1>(x)) + a * (t * t * detail::phi_series<2>(x));
+      return p0 + v0 * (t * detail::phi1_of(factors, x)) + a * (t * t * detail::phi_series<2>(x));
     }
     return p0 + (v1 - v0 - a * t) * (t / x);
   }
