@@ -65,6 +65,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <new>
 #include <span>
@@ -88,6 +89,14 @@
 #define POINTMASS_DETAIL_INDEPENDENT_ITERATIONS _Pragma("GCC ivdep")
 #else
 #define POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
+#endif
+
+// The step kernel is inlined into its loop even at -O2, where g++ would otherwise call the
+// larger configurations' kernel and so not vectorise the loop.
+#if defined(__GNUC__)
+#define POINTMASS_DETAIL_INLINE [[gnu::always_inline]]
+#else
+#define POINTMASS_DETAIL_INLINE
 #endif
 
 namespace pointmass::features {
@@ -547,7 +556,7 @@ class ParticleSystem {
   ///   p1 = P::position(p0, v0, v1, a, t, f);     force = 0;  age += t
   /// on each of x, y and z (advance<D, P> in particle.hpp). A particle of inverse mass 0 does
   /// not move. Plain arithmetic on the arrays: runs on a GPU as it runs here.
-  POINTMASS_HD static constexpr void step_particle(const Arrays& arrays, std::size_t i,
+  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void step_particle(const Arrays& arrays, std::size_t i,
                                                    const StepParameters& parameters) noexcept {
     const R t = parameters.duration;
     const auto factors = factors_of(arrays, i, parameters);
@@ -588,8 +597,17 @@ class ParticleSystem {
     // A trip count that is a known multiple of every vector width lets g++'s -O2 cost
     // model vectorise without a remainder loop; the remainder runs below.
     const std::size_t blocked = count & ~(vector_block - 1);
+#if defined(__clang__)
+#pragma clang diagnostic push
+    // Configurations that call a power function per particle cannot vectorise; that is
+    // documented, not worth a warning.
+#pragma clang diagnostic ignored "-Wpass-failed"
+#endif
     POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
     for (std::size_t k = 0; k < blocked; ++k) step_particle(arrays, begin + k, parameters);
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
     for (std::size_t k = blocked; k < count; ++k) step_particle(arrays, begin + k, parameters);
   }
 
@@ -625,7 +643,7 @@ class ParticleSystem {
   static constexpr std::size_t vector_block = 16;
 
  private:
-  POINTMASS_HD static constexpr auto factors_of(const Arrays& arrays, std::size_t i,
+  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr auto factors_of(const Arrays& arrays, std::size_t i,
                                                 const StepParameters& parameters) noexcept {
     if constexpr (per_particle_damping) {
       return D::factors(arrays.damping[i], parameters.duration);
@@ -638,13 +656,26 @@ class ParticleSystem {
 
   // Both outcomes computed, one kept: a select the vectoriser can do, where a branch is not.
   template <class F>
-  POINTMASS_HD static constexpr void advance_if(bool movable, R& p, R& v, R a, R t,
+  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void advance_if(bool movable, R& p, R& v, R a, R t,
                                                 const F& factors) noexcept {
     R p1 = p;
     R v1 = v;
     advance<D, P>(p1, v1, a, t, factors);
-    p = movable ? p1 : p;
-    v = movable ? v1 : v;
+    p = select(movable, p1, p);
+    v = select(movable, v1, v);
+  }
+
+  // condition ? if_true : if_false, as bit operations (g++ -O2 does not if-convert `?:` here).
+  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr R select(bool condition, R if_true,
+                                                                 R if_false) noexcept {
+    if constexpr (sizeof(R) == 4 || sizeof(R) == 8) {
+      using Bits = std::conditional_t<sizeof(R) == 4, std::uint32_t, std::uint64_t>;
+      const Bits mask = Bits(0) - static_cast<Bits>(condition);
+      return __builtin_bit_cast(R, static_cast<Bits>((__builtin_bit_cast(Bits, if_true) & mask) |
+                                                     (__builtin_bit_cast(Bits, if_false) & ~mask)));
+    } else {
+      return condition ? if_true : if_false;
+    }
   }
 
   static void store(R* x, R* y, R* z, std::size_t i, const Vector3<R>& value) noexcept {
