@@ -260,7 +260,7 @@ inline double observed_order(double error_h, double error_half) {
 }
 
 /// A bound on the global position error of a first-order combination at frame time h,
-/// derived from its local truncation error (see docs/accuracy.md, "How the bounds are
+/// derived from its local truncation error (see docs/accuracy.md, "How the test bounds are
 /// derived"). Every first-order combination's local error per step, to leading order, is
 /// at most
 ///   position  h^2/2 (|a| + |k| V)        velocity  h^2/2 (|a'| + |k| |a|)
