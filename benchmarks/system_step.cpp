@@ -1,0 +1,269 @@
+// ParticleSystem::step against, in the same run: a hand-written loop of the same maths over
+// plain staggered arrays (the speed of light for this step), a read-modify-write bandwidth
+// loop over as many bytes, and a loop of scalar Particles (one object per particle).
+// scripts/benchmark-system.sh runs it and turns the medians into docs/performance.md's table.
+// Counters: items_per_second = particle-steps per second.
+#define POINTMASS_ENABLE_PARALLEL 1
+#include <pointmass/particle_system.hpp>
+
+#include <pointmass/gravity.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cstdint>
+
+#include <cstddef>
+#include <cstdio>
+#include <cstdlib>
+#include <execution>
+#include <new>
+#include <random>
+#include <vector>
+
+namespace {
+
+using namespace pointmass;
+
+// The step, a run-time value from outside every timed loop (set in main), so the compiler
+// cannot fold it; main checks that a step really moves the particles.
+float float_duration = 0.0f;
+double double_duration = 0.0;
+template <class R>
+R duration() {
+  if constexpr (sizeof(R) == sizeof(float)) return float_duration;
+  else return double_duration;
+}
+
+template <class R>
+Vector3<R> random_vector(std::mt19937& engine, R scale) {
+  std::uniform_real_distribution<R> component(-scale, scale);
+  return {component(engine), component(engine), component(engine)};
+}
+
+template <class System>
+System make_system(std::size_t count) {
+  System system(count);
+  std::mt19937 engine(1);
+  for (std::size_t i = 0; i < count; ++i) {
+    system.spawn(random_vector(engine, typename System::real(100)),
+                 random_vector(engine, typename System::real(10)));
+  }
+  if constexpr (!System::per_particle_acceleration) {
+    system.set_acceleration(gravity<typename System::real>());
+  }
+  if constexpr (System::stores_damping && !System::per_particle_damping) {
+    system.set_damping(typename System::real(0.9));
+  }
+  if constexpr (System::per_particle_damping) {
+    for (std::size_t i = 0; i < count; ++i) system.set_damping(i, typename System::real(0.9));
+  }
+  return system;
+}
+
+template <class System>
+void BM_System(benchmark::State& state) {
+  auto system = make_system<System>(static_cast<std::size_t>(state.range(0)));
+  const auto t = duration<typename System::real>();
+  for (auto _ : state) {
+    system.step(t);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+template <class System>
+void BM_SystemParallel(benchmark::State& state) {
+  auto system = make_system<System>(static_cast<std::size_t>(state.range(0)));
+  const auto t = duration<typename System::real>();
+  for (auto _ : state) {
+    pointmass::step(std::execution::par_unseq, system, t);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+// Six arrays in one block, each offset by k x 448 bytes within its page.
+template <class R>
+struct StaggeredArrays {
+  explicit StaggeredArrays(std::size_t count) {
+    const std::size_t span = (count * sizeof(R) + 4095) / 4096 * 4096 + 448;
+    block = static_cast<R*>(::operator new(6 * span, std::align_val_t{64}));
+    std::mt19937 engine(1);
+    std::uniform_real_distribution<R> value(R(-10), R(10));
+    for (int k = 0; k < 6; ++k) {
+      array[k] = reinterpret_cast<R*>(reinterpret_cast<char*>(block) + k * span);
+      for (std::size_t i = 0; i < count; ++i) array[k][i] = value(engine);
+    }
+  }
+  ~StaggeredArrays() { ::operator delete(block, std::align_val_t{64}); }
+  StaggeredArrays(const StaggeredArrays&) = delete;
+  StaggeredArrays& operator=(const StaggeredArrays&) = delete;
+  R* block;
+  R* array[6];
+};
+
+// The same maths as ParticleSystem<R> (per-second damping, d^t once per step, p + v0 t),
+// written by hand.
+template <class R>
+void hand_step(R* __restrict px, R* __restrict py, R* __restrict pz, R* __restrict vx,
+               R* __restrict vy, R* __restrict vz, std::size_t n, R ax, R ay, R az, R t,
+               R kept) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const R x = vx[i], y = vy[i], z = vz[i];
+    vx[i] = x * kept + ax * t;
+    vy[i] = y * kept + ay * t;
+    vz[i] = z * kept + az * t;
+    px[i] = px[i] + x * t;
+    py[i] = py[i] + y * t;
+    pz[i] = pz[i] + z * t;
+  }
+}
+
+template <class R>
+void BM_HandStaggered(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  StaggeredArrays<R> arrays(n);
+  const R t = duration<R>();
+  const Vector3<R> g = gravity<R>();
+  R** a = arrays.array;
+  for (auto _ : state) {
+    const R kept = real_pow(R(0.9), t);
+    hand_step(a[0], a[1], a[2], a[3], a[4], a[5], n, g.x, g.y, g.z, t, kept);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+// Read-modify-write of the same six arrays: the memory bound of a step.
+template <class R>
+void rmw(R* __restrict a0, R* __restrict a1, R* __restrict a2, R* __restrict a3,
+         R* __restrict a4, R* __restrict a5, std::size_t n, R c) {
+  for (std::size_t i = 0; i < n; ++i) {
+    a0[i] += c, a1[i] += c, a2[i] += c, a3[i] += c, a4[i] += c, a5[i] += c;
+  }
+}
+
+template <class R>
+void BM_Bandwidth(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  StaggeredArrays<R> arrays(n);
+  const R c = duration<R>();
+  R** a = arrays.array;
+  for (auto _ : state) {
+    rmw(a[0], a[1], a[2], a[3], a[4], a[5], n, c);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+  state.SetBytesProcessed(state.iterations() * state.range(0) * 12 *
+                          static_cast<std::int64_t>(sizeof(R)));
+}
+
+template <class R>
+void BM_BandwidthParallel(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  StaggeredArrays<R> arrays(n);
+  const R c = duration<R>();
+  R** a = arrays.array;
+  constexpr std::size_t chunk = 16384;
+  const std::size_t chunks = (n + chunk - 1) / chunk;
+  for (auto _ : state) {
+    std::for_each(std::execution::par_unseq, detail::CountingIterator(0),
+                  detail::CountingIterator(chunks), [&](std::size_t k) {
+                    const std::size_t begin = k * chunk;
+                    const std::size_t end = std::min(begin + chunk, n);
+                    rmw(a[0] + begin, a[1] + begin, a[2] + begin, a[3] + begin, a[4] + begin,
+                        a[5] + begin, end - begin, c);
+                  });
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+// The seed's layout: one Particle object per particle, each integrated on its own.
+template <class R>
+void BM_Particles(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  std::vector<Particle<R>> particles(n);
+  std::mt19937 engine(1);
+  for (auto& particle : particles) {
+    particle.set_position(random_vector(engine, R(100)));
+    particle.set_velocity(random_vector(engine, R(10)));
+    particle.set_acceleration(gravity<R>());
+    particle.set_damping(R(0.9));
+  }
+  const R t = duration<R>();
+  for (auto _ : state) {
+    for (auto& particle : particles) particle.integrate(t);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+template <class R>
+using Sparks = ParticleSystem<R>;
+template <class R>
+using Undamped = ParticleSystem<R, damping::None>;
+template <class R>
+using PerFrame = ParticleSystem<R, damping::PerFrame>;
+template <class R>
+using WithLifetime = ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime>;
+template <class R>
+using WithForces = ParticleSystem<R, damping::PerSecond, position::Euler, features::Forces>;
+template <class R>
+using WithAcceleration =
+    ParticleSystem<R, damping::PerSecond, position::Euler, features::PerParticleAcceleration>;
+template <class R>
+using WithDamping =
+    ParticleSystem<R, damping::PerSecond, position::Euler, features::PerParticleDamping>;
+
+void sizes(benchmark::internal::Benchmark* b) { b->Arg(1000)->Arg(100000)->Arg(10000000); }
+void middle(benchmark::internal::Benchmark* b) { b->Arg(100000); }
+void large(benchmark::internal::Benchmark* b) { b->Arg(10000000); }
+
+#define POINTMASS_BENCH_BOTH(function, args)                              \
+  BENCHMARK_TEMPLATE(function, float)->Apply(args);                       \
+  BENCHMARK_TEMPLATE(function, double)->Apply(args)
+
+POINTMASS_BENCH_BOTH(BM_HandStaggered, sizes);
+POINTMASS_BENCH_BOTH(BM_Bandwidth, sizes);
+BENCHMARK_TEMPLATE(BM_System, Sparks<float>)->Apply(sizes);
+BENCHMARK_TEMPLATE(BM_System, Sparks<double>)->Apply(sizes);
+POINTMASS_BENCH_BOTH(BM_Particles, middle);
+BENCHMARK_TEMPLATE(BM_SystemParallel, Sparks<float>)->Apply(large)->UseRealTime();
+BENCHMARK_TEMPLATE(BM_SystemParallel, Sparks<double>)->Apply(large)->UseRealTime();
+BENCHMARK_TEMPLATE(BM_BandwidthParallel, float)->Apply(large)->UseRealTime();
+BENCHMARK_TEMPLATE(BM_BandwidthParallel, double)->Apply(large)->UseRealTime();
+// What each compile-time choice costs, at 100,000 particles.
+BENCHMARK_TEMPLATE(BM_System, Undamped<float>)->Apply(middle);
+BENCHMARK_TEMPLATE(BM_System, PerFrame<float>)->Apply(middle);
+BENCHMARK_TEMPLATE(BM_System, WithLifetime<float>)->Apply(middle);
+BENCHMARK_TEMPLATE(BM_System, WithForces<float>)->Apply(middle);
+BENCHMARK_TEMPLATE(BM_System, WithAcceleration<float>)->Apply(middle);
+BENCHMARK_TEMPLATE(BM_System, WithDamping<float>)->Apply(middle);
+
+template <class R>
+bool step_moves_particles() {
+  auto system = make_system<Sparks<R>>(32);
+  const Vector3<R> before = system.position(31);
+  system.step(duration<R>());
+  return duration<R>() > R(0) && !(system.position(31) == before);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // 1/60 s, computed at run time from the program's arguments' count (always >= 1).
+  float_duration = 1.0f / (60.0f * static_cast<float>(argc > 0 ? 1 : 2));
+  double_duration = 1.0 / (60.0 * (argc > 0 ? 1 : 2));
+  if (!step_moves_particles<float>() || !step_moves_particles<double>()) {
+    std::fputs("system_step: a step did not move the particles; the timings would be void\n",
+               stderr);
+    return 1;
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

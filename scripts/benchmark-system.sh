@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Regenerates the tables of docs/performance.md: builds benchmarks/system_step.cpp with
+# -O3 -march=native (Release), runs it with interleaved repetitions and prints the medians
+# (M particle-steps/s) and their ratios as Markdown. Usage: scripts/benchmark-system.sh [reps]
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+repetitions=${1:-5}
+build="$POINTMASS_ROOT/build/benchmark-system"
+cmake -S "$POINTMASS_ROOT" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_CXX_FLAGS="-march=native" >/dev/null
+cmake --build "$build" --target system_step >/dev/null
+json=$(mktemp)
+trap 'rm -f "$json"' EXIT
+"$build/benchmarks/system_step" --benchmark_repetitions="$repetitions" \
+  --benchmark_enable_random_interleaving=true --benchmark_min_time=0.05 \
+  --benchmark_report_aggregates_only=true --benchmark_format=json >"$json"
+python3 - "$json" <<'PY'
+import json, sys
+data = json.load(open(sys.argv[1]))
+rate = {b["run_name"]: b["items_per_second"] / 1e6
+        for b in data["benchmarks"] if b.get("aggregate_name") == "median"}
+ctx = data["context"]
+print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; "
+      f"{ctx.get('library_build_type', '')} Google Benchmark; medians of "
+      f"{sys.argv[0] and ''}interleaved repetitions, M particle-steps/s.\n")
+for real in ("float", "double"):
+    print(f"### {real}\n")
+    print("| loop | 1,000 | 100,000 | 10,000,000 |\n|---|---|---|---|")
+    rows = [("scalar `Particle` objects (the seed's layout)", "BM_Particles<%s>"),
+            ("hand-written loop, staggered arrays", "BM_HandStaggered<%s>"),
+            ("`ParticleSystem<%s>::step`", "BM_System<Sparks<%s>>"),
+            ("read-modify-write bandwidth (6 arrays)", "BM_Bandwidth<%s>"),
+            ("`pointmass::step(par_unseq, ...)`, 2 threads", "BM_SystemParallel<Sparks<%s>>"),
+            ("read-modify-write bandwidth, 2 threads", "BM_BandwidthParallel<%s>")]
+    for label, name in rows:
+        cells = []
+        for n in ("1000", "100000", "10000000"):
+            key = (name % real) + "/" + n + ("/real_time" if "Parallel" in name else "")
+            cells.append(f"{rate[key]:,.0f}" if key in rate else "")
+        print(f"| {label.replace('%s', real)} | " + " | ".join(cells) + " |")
+    def r(a, b, n):
+        ka, kb = a % real + "/" + n, b % real + "/" + n
+        ka += "/real_time" if "Parallel" in a else ""
+        kb += "/real_time" if "Parallel" in b else ""
+        return rate[ka] / rate[kb]
+    print("\n| ratio | value | target |\n|---|---|---|")
+    for n in ("1000", "100000", "10000000"):
+        print(f"| system / hand-written, {int(n):,} | {r('BM_System<Sparks<%s>>', 'BM_HandStaggered<%s>', n):.2f} | >= 0.9 |")
+    print(f"| system / scalar Particles, 100,000 | {r('BM_System<Sparks<%s>>', 'BM_Particles<%s>', '100000'):.1f} | >= 15 |")
+    print(f"| parallel system / parallel bandwidth, 10,000,000 | {r('BM_SystemParallel<Sparks<%s>>', 'BM_BandwidthParallel<%s>', '10000000'):.2f} | >= 0.9 |")
+    print()
+print("### What each choice costs (float, 100,000 particles)\n")
+print("| configuration | M particle-steps/s | / default |\n|---|---|---|")
+base = rate["BM_System<Sparks<float>>/100000"]
+for label, name in [("default: uniform per-second damping and gravity", "Sparks"),
+                    ("damping::None", "Undamped"), ("damping::PerFrame", "PerFrame"),
+                    ("+ features::Lifetime", "WithLifetime"), ("+ features::Forces", "WithForces"),
+                    ("+ features::PerParticleAcceleration", "WithAcceleration"),
+                    ("+ features::PerParticleDamping (powf per particle)", "WithDamping")]:
+    v = rate[f"BM_System<{name}<float>>/100000"]
+    print(f"| {label} | {v:,.0f} | {v / base:.2f} |")
+PY

@@ -1,0 +1,42 @@
+// pointmass::step(std::execution::par_unseq, system, t) computes what system.step(t) does,
+// bit for bit, over many chunks.
+#define POINTMASS_ENABLE_PARALLEL 1
+#include <pointmass/particle_system.hpp>
+
+#include <doctest/doctest.h>
+
+#include <execution>
+#include <random>
+
+#include "system_support.hpp"
+
+using namespace pointmass;
+using pointmass::test::random_vector;
+using pointmass::test::same_bits;
+
+TEST_CASE_TEMPLATE("a parallel step equals the serial step", R, float, double) {
+  using System = ParticleSystem<R, damping::PerSecond, position::Kinematic, features::Lifetime>;
+  constexpr std::size_t count = 100'003;  // 7 chunks, the last partial
+  std::mt19937 engine(5);
+  System serial(count);
+  serial.set_damping(R(0.7));
+  serial.set_acceleration({R(0), R(-9.807), R(0)});
+  for (std::size_t i = 0; i < count; ++i) {
+    serial.spawn(random_vector(engine, R(50)), random_vector(engine, R(20)));
+    serial.set_lifetime(i, R(0.01) * static_cast<R>(i % 50 + 1));
+  }
+  System parallel = serial;
+  for (int step = 0; step < 8; ++step) {
+    serial.step(R(1) / R(30));
+    pointmass::step(std::execution::par_unseq, parallel, R(1) / R(30));
+  }
+  REQUIRE(serial.size() == parallel.size());
+  CHECK(serial.size() < count);  // lifetimes expired some
+  bool same = true;
+  for (std::size_t i = 0; i < serial.size(); ++i) {
+    same = same && same_bits(serial.position(i), parallel.position(i)) &&
+           same_bits(serial.velocity(i), parallel.velocity(i));
+  }
+  CHECK(same);
+  CHECK(parallel.position(0).y != R(0));
+}
