@@ -1,0 +1,692 @@
+// Fuzz target: drives Particle (every damping x position pair) and ParticleSystem (six
+// feature sets), float and double, through the public API with arbitrary bytes.
+//
+// The first byte chooses the configuration; the rest is a program of operations (setters,
+// forces, steps, spawns, kills...) whose arguments are read from the input as raw bit
+// patterns, special values (0, -0, infinities, NaN, subnormals, the largest finite value),
+// "physical" values or tiny durations. For every operation the target checks:
+//
+//   * A value the contract rejects (docs/numerics.md, "Contracts") is reported exactly once
+//     to the installed handler, naming the documented function and argument, with a value
+//     text that reads back as the value; and nothing changes.
+//   * A value the contract accepts is not reported, and takes effect.
+//   * "Finite physics" gives finite results. The physics is finite while every accepted value
+//     stays within bounds that make overflow impossible: position, velocity, acceleration and
+//     force components |x| <= 1e4, inverse mass <= 1e4 (mass >= 1e-4, or infinite), damping
+//     anything in [0, 1], steps 0 <= t <= 1 s, at most 4096 steps and 256 forces per input.
+//     Then |a| <= 1e4 + 256 * 1e4 * 1e4 < 3e10, |v| <= 1e4 + 4096 * 3e10 < 2e14 and
+//     |p| < 1e4 + 4096 * (2e14 + 3e10) < 1e18, far below float's 3.4e38: any non-finite
+//     position or velocity is the library's fault. Outside the bounds an overflow to
+//     infinity is the input's doing, and only the contracts (and the sanitizers) are checked.
+//   * A ParticleSystem agrees with the same operations on scalar Particles (a mirror), bit
+//     for bit (zeros compared by value: the scalar path adds a zero force to the acceleration,
+//     which turns a -0 component into +0), through step() and through the step_particle path
+//     a GPU loop would run.
+//
+// A failed check prints what failed and calls abort(), which libFuzzer reports as a crash
+// with the input that caused it. Built with POINTMASS_ENABLE_CHECKS, so the hot-path
+// contracts (integrate's duration, add_force's vector) are checked in every build type.
+// Without libFuzzer, replay_main.cpp runs the same function over the corpus files.
+#include <pointmass/particle.hpp>
+#include <pointmass/particle_system.hpp>
+
+#include <charconv>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using namespace pointmass;
+
+// --- what the handler saw -------------------------------------------------------------------
+
+struct Report {
+  int calls = 0;
+  std::string function;
+  std::string argument;
+  std::string text;
+  std::string message;
+};
+Report report;
+
+void record(const ContractViolation& violation) {
+  ++report.calls;
+  report.function = violation.function;
+  report.argument = violation.argument;
+  report.text = violation.text;
+  report.message = describe(violation);
+}
+
+[[noreturn]] void fail(const char* what, const char* detail = "") {
+  std::fprintf(stderr, "fuzz check failed: %s %s\n", what, detail);
+  std::abort();
+}
+void require(bool condition, const char* what, const char* detail = "") {
+  if (!condition) fail(what, detail);
+}
+
+// --- reading the input ----------------------------------------------------------------------
+
+class Input {
+ public:
+  Input(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
+  bool empty() const { return position_ >= size_; }
+  std::uint8_t byte() { return position_ < size_ ? data_[position_++] : 0; }
+  std::uint16_t word() { return static_cast<std::uint16_t>(byte() | (byte() << 8)); }
+
+  /// Any value of R: raw bits, a special value, a physical value, a fraction, a tiny number.
+  template <class R>
+  R number() {
+    using Bits = std::conditional_t<sizeof(R) == 4, std::uint32_t, std::uint64_t>;
+    constexpr R special[] = {R(0),
+                             -R(0),
+                             R(1),
+                             -R(1),
+                             R(0.5),
+                             std::numeric_limits<R>::infinity(),
+                             -std::numeric_limits<R>::infinity(),
+                             std::numeric_limits<R>::quiet_NaN(),
+                             std::numeric_limits<R>::denorm_min(),
+                             -std::numeric_limits<R>::denorm_min(),
+                             std::numeric_limits<R>::min(),
+                             std::numeric_limits<R>::max(),
+                             -std::numeric_limits<R>::max(),
+                             std::numeric_limits<R>::epsilon(),
+                             R(1) - std::numeric_limits<R>::epsilon() / R(2),
+                             R(1) + std::numeric_limits<R>::epsilon()};
+    switch (byte() % 8) {
+      case 0:
+      case 1: {
+        Bits bits = 0;
+        for (std::size_t k = 0; k < sizeof(Bits); ++k) bits |= static_cast<Bits>(byte()) << (8 * k);
+        R value;
+        std::memcpy(&value, &bits, sizeof value);
+        return value;
+      }
+      case 2:
+        return special[byte() % (sizeof special / sizeof special[0])];
+      case 3:
+      case 4:
+      case 5:  // -512 .. 512 in steps of 1/64
+        return static_cast<R>(static_cast<std::int16_t>(word())) / R(64);
+      case 6:  // [0, 1]
+        return static_cast<R>(word()) / R(65535);
+      default: {  // 2^-n, n up to the smallest subnormal
+        constexpr int deepest = -std::numeric_limits<R>::min_exponent +
+                                std::numeric_limits<R>::digits;
+        R value = R(1);
+        for (int n = word() % (deepest + 1); n > 0; --n) value /= R(2);
+        return value;
+      }
+    }
+  }
+  template <class R>
+  Vector3<R> vector() {
+    const R x = number<R>();
+    const R y = number<R>();
+    const R z = number<R>();
+    return {x, y, z};
+  }
+
+ private:
+  const std::uint8_t* data_;
+  std::size_t size_;
+  std::size_t position_ = 0;
+};
+
+// --- comparisons ----------------------------------------------------------------------------
+
+template <class R>
+bool same(R a, R b) {  // same bits, or both zero, or both NaN
+  if (a != a && b != b) return true;
+  if (a == R(0) && b == R(0)) return true;
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+template <class R>
+bool same(const Vector3<R>& a, const Vector3<R>& b) {
+  return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z);
+}
+template <class R>
+bool identical(R a, R b) {  // same bits exactly (or both NaN)
+  return (a != a && b != b) || std::memcmp(&a, &b, sizeof a) == 0;
+}
+template <class R>
+bool identical(const Vector3<R>& a, const Vector3<R>& b) {
+  return identical(a.x, b.x) && identical(a.y, b.y) && identical(a.z, b.z);
+}
+
+template <class T>
+bool reads_back(const char* first, const char* last, T value) {
+  T parsed{};
+  const auto result = std::from_chars(first, last, parsed);
+  if (result.ec != std::errc{} || result.ptr != last) return false;
+  if constexpr (std::is_floating_point_v<T>) return identical(parsed, value);
+  else return parsed == value;
+}
+
+// The handler was called exactly once for (function, argument), and its text reads back as
+// `value` (a number, or "(x, y, z)").
+template <class T>
+void expect_rejected(const char* function, const char* argument, const T& value) {
+  require(report.calls == 1, "rejected value not reported once:", function);
+  require(report.function == function, "wrong function in report:", report.message.c_str());
+  require(report.argument == argument, "wrong argument in report:", report.message.c_str());
+  const std::string expected_start =
+      std::string("pointmass: ") + function + ": argument '" + argument + "' = ";
+  require(report.message.rfind(expected_start, 0) == 0, "message format:", report.message.c_str());
+  const char* text = report.text.c_str();
+  const char* end = text + report.text.size();
+  if constexpr (is_vector3_v<T>) {
+    // "(x, y, z)"
+    require(report.text.size() > 2 && text[0] == '(' && end[-1] == ')', "vector text:", text);
+    const char* first = text + 1;
+    const typename T::value_type components[3] = {value.x, value.y, value.z};
+    for (int k = 0; k < 3; ++k) {
+      const char* stop = k < 2 ? std::strstr(first, ", ") : end - 1;
+      require(stop != nullptr && reads_back(first, stop, components[k]), "vector value text:", text);
+      first = stop + 2;
+    }
+  } else {
+    require(reads_back(text, end, value), "value text does not read back:", text);
+  }
+  report = {};
+}
+void expect_accepted(const char* function) {
+  require(report.calls == 0, "accepted value reported:", function);
+}
+
+// --- bounds of finite physics ---------------------------------------------------------------
+
+constexpr double bound = 1e4;           // position, velocity, acceleration, force components
+constexpr double inverse_mass_bound = 1e4;
+constexpr double step_bound = 1.0;      // seconds
+constexpr int max_steps = 4096;
+constexpr int max_forces = 256;
+
+struct Budget {
+  bool finite_physics = true;
+  int steps = 0;
+  int forces = 0;
+
+  template <class R>
+  void value(R x, double limit = bound) {
+    if (!(static_cast<double>(x < R(0) ? -x : x) <= limit)) finite_physics = false;
+  }
+  template <class R>
+  void vector(const Vector3<R>& v) {
+    value(v.x), value(v.y), value(v.z);
+  }
+  void step(int count, double t) {
+    steps += count;
+    if (steps > max_steps || !(t <= step_bound)) finite_physics = false;
+  }
+  void force() {
+    if (++forces > max_forces) finite_physics = false;
+  }
+};
+
+template <class R>
+bool finite(const Vector3<R>& v) {
+  return is_finite(v);
+}
+
+// --- Particle -------------------------------------------------------------------------------
+
+template <class Particle>
+bool same_state(const Particle& a, const Particle& b) {
+  return identical(a.position(), b.position()) && identical(a.velocity(), b.velocity()) &&
+         identical(a.acceleration(), b.acceleration()) &&
+         identical(a.force_accumulator(), b.force_accumulator()) &&
+         identical(a.inverse_mass(), b.inverse_mass()) && identical(a.damping(), b.damping());
+}
+
+template <class R, class D, class P>
+void fuzz_particle(Input& in) {
+  using Body = Particle<R, D, P>;
+  Body body;
+  Budget budget;
+  for (int op = 0; op < 200 && !in.empty(); ++op) {
+    const Body before = body;
+    bool rejected = false;
+    switch (in.byte() % 10) {
+      case 0: {
+        const auto p = in.vector<R>();
+        body.set_position(p);
+        if ((rejected = !finite(p))) expect_rejected("set_position", "position", p);
+        else require(identical(body.position(), p), "set_position did not take effect");
+        budget.vector(p);
+        break;
+      }
+      case 1: {
+        const auto v = in.vector<R>();
+        body.set_velocity(v);
+        if ((rejected = !finite(v))) expect_rejected("set_velocity", "velocity", v);
+        else require(identical(body.velocity(), v), "set_velocity did not take effect");
+        budget.vector(v);
+        break;
+      }
+      case 2: {
+        const auto a = in.vector<R>();
+        body.set_acceleration(a);
+        if ((rejected = !finite(a))) expect_rejected("set_acceleration", "acceleration", a);
+        else require(identical(body.acceleration(), a), "set_acceleration did not take effect");
+        budget.vector(a);
+        break;
+      }
+      case 3: {
+        const R m = in.number<R>();
+        body.set_mass(m);
+        // Documented: mass > 0, not NaN, 1/mass finite (infinity: immovable).
+        rejected = m != m || !(m > R(0)) || !real_isfinite(R(1) / m);
+        if (rejected) {
+          expect_rejected("set_mass", "mass", m);
+        } else {
+          require(identical(body.inverse_mass(), R(1) / m), "set_mass did not take effect");
+          budget.value(R(1) / m, inverse_mass_bound);
+        }
+        break;
+      }
+      case 4: {
+        const R im = in.number<R>();
+        body.set_inverse_mass(im);
+        rejected = !real_isfinite(im) || im < R(0);
+        if (rejected) expect_rejected("set_inverse_mass", "inverse_mass", im);
+        else require(identical(body.inverse_mass(), im), "set_inverse_mass did not take effect");
+        if (!rejected) budget.value(im, inverse_mass_bound);
+        break;
+      }
+      case 5: {
+        if constexpr (Body::stores_damping) {
+          const R d = in.number<R>();
+          body.set_damping(d);
+          rejected = d != d || d < R(0) || d > R(1);
+          if (rejected) expect_rejected("set_damping", "damping", d);
+          else require(identical(body.damping(), d), "set_damping did not take effect");
+        }
+        break;
+      }
+      case 6: {
+        const auto f = in.vector<R>();
+        body.add_force(f);
+        if ((rejected = !finite(f))) {
+          expect_rejected("add_force", "force", f);
+        } else {
+          budget.vector(f);
+          budget.force();
+        }
+        break;
+      }
+      case 7:
+      case 8:
+      case 9: {
+        const R t = in.number<R>();
+        const int count = in.byte() % 17;
+        for (int k = 0; k < (count == 0 ? 1 : count); ++k) {
+          const Body start = body;
+          body.integrate(t);
+          rejected = !real_isfinite(t) || t < R(0);
+          if (rejected) {
+            expect_rejected("integrate", "duration", t);
+            require(same_state(body, start), "rejected integrate changed the particle");
+            break;
+          }
+          expect_accepted("integrate");
+          if (!body.has_finite_mass()) {
+            require(identical(body.position(), start.position()) &&
+                        identical(body.velocity(), start.velocity()),
+                    "an immovable particle moved");
+          }
+          if (t == R(0) && body.has_finite_mass()) {
+            require(same_state(body, start), "a zero step changed the particle");
+          } else {
+            require(identical(body.force_accumulator(), Vector3<R>{}), "accumulator not cleared");
+          }
+        }
+        if (!rejected) budget.step(count == 0 ? 1 : count, static_cast<double>(t));
+        break;
+      }
+      default:
+        break;
+    }
+    if (rejected) {
+      require(same_state(body, before), "a rejected call changed the particle");
+    } else {
+      expect_accepted("setter");
+    }
+    if (budget.finite_physics) {
+      require(finite(body.position()) && finite(body.velocity()),
+              "finite physics gave a non-finite particle");
+    }
+  }
+}
+
+// --- ParticleSystem, against a mirror of scalar Particles ------------------------------------
+
+template <class System>
+class Mirror {
+ public:
+  using R = typename System::real;
+  using Body = typename System::particle_type;
+
+  std::vector<Body> bodies;
+  std::vector<R> ages;
+  std::vector<R> lifetimes;
+  Vector3<R> acceleration{};
+  R damping = R(1);
+
+  void spawn(const Vector3<R>& p, const Vector3<R>& v) {
+    Body body;
+    body.set_position(p);
+    body.set_velocity(v);
+    if constexpr (!System::per_particle_acceleration) body.set_acceleration(acceleration);
+    if constexpr (System::stores_damping && !System::per_particle_damping) body.set_damping(damping);
+    bodies.push_back(body);
+    ages.push_back(R(0));
+    lifetimes.push_back(std::numeric_limits<R>::infinity());
+  }
+  void kill(std::size_t i) {
+    bodies[i] = bodies.back();
+    ages[i] = ages.back();
+    lifetimes[i] = lifetimes.back();
+    bodies.pop_back();
+    ages.pop_back();
+    lifetimes.pop_back();
+  }
+  void step(R t) {
+    if (t == R(0) || bodies.empty()) return;
+    for (auto& body : bodies) body.integrate(t);
+    if constexpr (System::has_lifetime) {
+      for (auto& age : ages) age += t;
+      std::size_t i = 0;
+      while (i < bodies.size()) {
+        if (!(ages[i] < lifetimes[i])) kill(i);
+        else ++i;
+      }
+    }
+  }
+};
+
+template <class System>
+void compare(const System& system, const Mirror<System>& mirror, const Budget& budget) {
+  require(system.size() == mirror.bodies.size(), "system and mirror differ in size");
+  for (std::size_t i = 0; i < system.size(); ++i) {
+    const auto& body = mirror.bodies[i];
+    require(same(system.position(i), body.position()), "system position differs from Particle");
+    require(same(system.velocity(i), body.velocity()), "system velocity differs from Particle");
+    if constexpr (System::has_forces) {
+      require(same(system.force_accumulator(i), body.force_accumulator()), "force differs");
+      require(identical(system.inverse_mass(i), body.inverse_mass()), "inverse mass differs");
+    }
+    if constexpr (System::has_lifetime) {
+      require(identical(system.age(i), mirror.ages[i]), "age differs");
+      require(identical(system.lifetime(i), mirror.lifetimes[i]), "lifetime differs");
+    }
+    require(identical(system.damping(i), body.damping()), "damping differs");
+    if (budget.finite_physics) {
+      require(finite(system.position(i)) && finite(system.velocity(i)),
+              "finite physics gave a non-finite system particle");
+    }
+  }
+}
+
+template <class System>
+void fuzz_system(Input& in) {
+  using R = typename System::real;
+  System system(in.byte() % 40);
+  Mirror<System> mirror;
+  Budget budget;
+  for (int op = 0; op < 200 && !in.empty(); ++op) {
+    const std::uint8_t code = in.byte();
+    std::size_t index = in.byte();
+    if (index < 200 && system.size() != 0) index %= system.size();  // mostly valid indices
+    const bool valid_index = index < system.size();
+    switch (code % 13) {
+      case 0:
+      case 1: {
+        const auto p = in.vector<R>();
+        const auto v = in.vector<R>();
+        if (system.size() >= 64) break;
+        const std::size_t i = system.spawn(p, v);
+        if (!finite(p)) {
+          expect_rejected("spawn", "position", p);
+          require(i == System::npos, "rejected spawn returned an index");
+        } else if (!finite(v)) {
+          expect_rejected("spawn", "velocity", v);
+          require(i == System::npos, "rejected spawn returned an index");
+        } else {
+          expect_accepted("spawn");
+          require(i == mirror.bodies.size(), "spawn index");
+          mirror.spawn(p, v);
+          budget.vector(p);
+          budget.vector(v);
+        }
+        break;
+      }
+      case 2: {
+        system.kill(index);
+        if (!valid_index) expect_rejected("kill", "index", index);
+        else mirror.kill(index);
+        break;
+      }
+      case 3: {
+        const auto p = in.vector<R>();
+        system.set_position(index, p);
+        if (!valid_index) expect_rejected("set_position", "index", index);
+        else if (!finite(p)) expect_rejected("set_position", "position", p);
+        else mirror.bodies[index].set_position(p), budget.vector(p);
+        break;
+      }
+      case 4: {
+        const auto v = in.vector<R>();
+        system.set_velocity(index, v);
+        if (!valid_index) expect_rejected("set_velocity", "index", index);
+        else if (!finite(v)) expect_rejected("set_velocity", "velocity", v);
+        else mirror.bodies[index].set_velocity(v), budget.vector(v);
+        break;
+      }
+      case 5: {
+        const auto a = in.vector<R>();
+        if constexpr (System::per_particle_acceleration) {
+          system.set_acceleration(index, a);
+          if (!valid_index) expect_rejected("set_acceleration", "index", index);
+          else if (!finite(a)) expect_rejected("set_acceleration", "acceleration", a);
+          else mirror.bodies[index].set_acceleration(a), budget.vector(a);
+        } else {
+          system.set_acceleration(a);
+          if (!finite(a)) {
+            expect_rejected("set_acceleration", "acceleration", a);
+          } else {
+            mirror.acceleration = a;
+            for (auto& body : mirror.bodies) body.set_acceleration(a);
+            budget.vector(a);
+          }
+        }
+        break;
+      }
+      case 6: {
+        if constexpr (System::stores_damping) {
+          const R d = in.number<R>();
+          const bool bad = d != d || d < R(0) || d > R(1);
+          if constexpr (System::per_particle_damping) {
+            system.set_damping(index, d);
+            if (!valid_index) expect_rejected("set_damping", "index", index);
+            else if (bad) expect_rejected("set_damping", "damping", d);
+            else mirror.bodies[index].set_damping(d);
+          } else {
+            system.set_damping(d);
+            if (bad) {
+              expect_rejected("set_damping", "damping", d);
+            } else {
+              mirror.damping = d;
+              for (auto& body : mirror.bodies) body.set_damping(d);
+            }
+          }
+        }
+        break;
+      }
+      case 7: {
+        if constexpr (System::has_forces) {
+          const R m = in.number<R>();
+          system.set_mass(index, m);
+          if (!valid_index) {
+            expect_rejected("set_mass", "index", index);
+          } else if (m != m || !(m > R(0)) || !real_isfinite(R(1) / m)) {
+            expect_rejected("set_mass", "mass", m);
+          } else {
+            mirror.bodies[index].set_mass(m);
+            budget.value(R(1) / m, inverse_mass_bound);
+          }
+        }
+        break;
+      }
+      case 8: {
+        if constexpr (System::has_forces) {
+          const auto f = in.vector<R>();
+          system.add_force(index, f);
+          if (!valid_index) {
+            expect_rejected("add_force", "index", index);
+          } else if (!finite(f)) {
+            expect_rejected("add_force", "force", f);
+          } else {
+            mirror.bodies[index].add_force(f);
+            budget.vector(f);
+            budget.force();
+          }
+        }
+        break;
+      }
+      case 9: {
+        if constexpr (System::has_lifetime) {
+          const R seconds = in.number<R>();
+          system.set_lifetime(index, seconds);
+          if (!valid_index) expect_rejected("set_lifetime", "index", index);
+          else if (seconds != seconds || !(seconds > R(0)))
+            expect_rejected("set_lifetime", "seconds", seconds);
+          else mirror.lifetimes[index] = seconds;
+        }
+        break;
+      }
+      case 10: {  // the step_particle path, as a GPU loop runs it
+        const R t = in.number<R>();
+        if (!real_isfinite(t) || t < R(0)) break;
+        if (system.size() != 0 && t != R(0)) {
+          const auto parameters = system.step_parameters(t);
+          for (std::size_t i = 0; i < system.size(); ++i) {
+            System::step_particle(system.arrays(), i, parameters);
+          }
+          system.finish_step();
+        }
+        mirror.step(t);
+        budget.step(1, static_cast<double>(t));
+        break;
+      }
+      case 11: {  // a copy steps as the original does
+        System copy = system;
+        const R t = in.number<R>();
+        if (!real_isfinite(t) || t < R(0)) break;
+        copy.step(t);
+        system.step(t);
+        require(copy.size() == system.size(), "copy stepped to another size");
+        for (std::size_t i = 0; i < system.size(); ++i) {
+          require(identical(copy.position(i), system.position(i)), "copy stepped differently");
+        }
+        mirror.step(t);
+        budget.step(1, static_cast<double>(t));
+        break;
+      }
+      default: {
+        const R t = in.number<R>();
+        const int count = in.byte() % 9;
+        for (int k = 0; k < (count == 0 ? 1 : count); ++k) {
+          system.step(t);
+          if (!real_isfinite(t) || t < R(0)) {
+            expect_rejected("step", "duration", t);
+            break;
+          }
+          mirror.step(t);
+        }
+        if (real_isfinite(t) && t >= R(0)) budget.step(count == 0 ? 1 : count, static_cast<double>(t));
+        break;
+      }
+    }
+    expect_accepted("system operation");
+    compare(system, mirror, budget);
+  }
+}
+
+// --- the configurations ---------------------------------------------------------------------
+
+template <class R, class D, class P>
+struct ParticleConfig {
+  static void run(Input& in) { fuzz_particle<R, D, P>(in); }
+};
+template <class System>
+struct SystemConfig {
+  static void run(Input& in) { fuzz_system<System>(in); }
+};
+
+template <class R>
+using ParticleConfigs = std::tuple<
+    ParticleConfig<R, damping::None, position::Euler>,
+    ParticleConfig<R, damping::None, position::Kinematic>,
+    ParticleConfig<R, damping::None, position::SemiImplicit>,
+    ParticleConfig<R, damping::None, position::Exact>,
+    ParticleConfig<R, damping::PerFrame, position::Euler>,
+    ParticleConfig<R, damping::PerFrame, position::Kinematic>,
+    ParticleConfig<R, damping::PerFrame, position::SemiImplicit>,
+    ParticleConfig<R, damping::PerSecond, position::Euler>,
+    ParticleConfig<R, damping::PerSecond, position::Kinematic>,
+    ParticleConfig<R, damping::PerSecond, position::SemiImplicit>,
+    ParticleConfig<R, damping::AccelerateThenDamp, position::Euler>,
+    ParticleConfig<R, damping::AccelerateThenDamp, position::Kinematic>,
+    ParticleConfig<R, damping::AccelerateThenDamp, position::SemiImplicit>,
+    ParticleConfig<R, damping::Exact, position::Euler>,
+    ParticleConfig<R, damping::Exact, position::Kinematic>,
+    ParticleConfig<R, damping::Exact, position::SemiImplicit>,
+    ParticleConfig<R, damping::Exact, position::Exact>>;
+
+template <class R>
+using SystemConfigs = std::tuple<
+    SystemConfig<ParticleSystem<R>>,
+    SystemConfig<ParticleSystem<R, damping::None, position::Exact,
+                                 features::PerParticleAcceleration>>,
+    SystemConfig<ParticleSystem<R, damping::PerFrame, position::SemiImplicit, features::Forces>>,
+    SystemConfig<ParticleSystem<R, damping::AccelerateThenDamp, position::Kinematic,
+                                 features::PerParticleDamping, features::Lifetime>>,
+    SystemConfig<ParticleSystem<R, damping::Exact, position::Exact, features::PerParticleDamping,
+                                 features::PerParticleAcceleration, features::Forces,
+                                 features::Lifetime>>,
+    SystemConfig<ParticleSystem<R, damping::PerSecond, position::SemiImplicit, features::Forces,
+                                 features::Lifetime>>>;
+
+template <class... A, class... B>
+auto concatenate(std::tuple<A...>, std::tuple<B...>) -> std::tuple<A..., B...>;
+using Configs = decltype(concatenate(
+    concatenate(std::declval<ParticleConfigs<float>>(), std::declval<ParticleConfigs<double>>()),
+    concatenate(std::declval<SystemConfigs<float>>(), std::declval<SystemConfigs<double>>())));
+
+template <std::size_t... I>
+void dispatch(std::size_t which, Input& in, std::index_sequence<I...>) {
+  ((which == I ? (std::tuple_element_t<I, Configs>::run(in), 0) : 0), ...);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const bool installed = (set_contract_handler(&record), true);
+  static_cast<void>(installed);
+  report = {};
+  Input in(data, size);
+  constexpr std::size_t count = std::tuple_size_v<Configs>;
+  dispatch(in.byte() % count, in, std::make_index_sequence<count>{});
+  return 0;
+}

@@ -1,0 +1,132 @@
+// A particle stepped at compile time. damping::None and damping::PerFrame call no maths
+// function, so a whole trajectory is a constant expression with every position policy
+// (position::Exact too, paired with None: its series are plain arithmetic); PerSecond,
+// AccelerateThenDamp and Exact call pow, log or expm1, which are not constexpr in C++20.
+//
+// The static_asserts check physics, not recorded numbers: with dyadic inputs (powers of two)
+// every operation is exact in float and in double, so the discrete scheme's closed forms hold
+// with ==. The runtime test checks that the compile-time trajectory and the same one computed
+// at run time agree bit for bit, with inputs that round.
+#include <doctest/doctest.h>
+
+#include <limits>
+
+#include <pointmass/particle.hpp>
+
+namespace {
+
+using namespace pointmass;
+
+/// Ballistic shot: n steps of t from p0 with v0 under a; returns the final particle.
+template <class R, class D, class P>
+constexpr Particle<R, D, P> shot(Vector3<R> p0, Vector3<R> v0, Vector3<R> a, R damping, R t,
+                                 int n) {
+  Particle<R, D, P> particle;
+  particle.set_position(p0);
+  particle.set_velocity(v0);
+  particle.set_acceleration(a);
+  particle.set_mass(R(2));
+  if constexpr (Particle<R, D, P>::stores_damping) particle.set_damping(damping);
+  for (int k = 0; k < n; ++k) {
+    particle.add_force({R(0), R(1), R(0)});  // 1 N on 2 kg: a further 0.5 m/s^2 up
+    particle.integrate(t);
+  }
+  return particle;
+}
+
+template <class R>
+constexpr Vector3<R> origin{R(0), R(4), R(0)};
+template <class R>
+constexpr Vector3<R> launch{R(8), R(16), R(-2)};
+template <class R>
+constexpr Vector3<R> gravity{R(0), R(-16.5), R(0)};  // -16 once the 0.5 up is added
+
+// None + Kinematic is exact for constant acceleration: after 64 steps of 1/64 s (T = 1 s),
+// p = p0 + v0 T + a T^2 / 2 and v = v0 + a T, exactly.
+template <class R>
+constexpr bool kinematic_is_exact() {
+  const auto p = shot<R, damping::None, position::Kinematic>(origin<R>, launch<R>, gravity<R>,
+                                                             R(1), R(1) / R(64), 64);
+  return p.position() == Vector3<R>{R(8), R(4 + 16 - 8), R(-2)} &&
+         p.velocity() == Vector3<R>{R(8), R(16 - 16), R(-2)};
+}
+static_assert(kinematic_is_exact<float>());
+static_assert(kinematic_is_exact<double>());
+
+// position::Exact with damping::None is the same closed form.
+template <class R>
+constexpr bool exact_without_damping_is_exact() {
+  const auto p = shot<R, damping::None, position::Exact>(origin<R>, launch<R>, gravity<R>, R(1),
+                                                         R(1) / R(64), 64);
+  return p.position() == Vector3<R>{R(8), R(12), R(-2)} && p.velocity().y == R(0);
+}
+static_assert(exact_without_damping_is_exact<float>());
+static_assert(exact_without_damping_is_exact<double>());
+
+// None + Euler: p_n = p0 + v0 n t + a t^2 n (n - 1) / 2 (the velocity lags a step).
+template <class R>
+constexpr bool euler_lags_a_step() {
+  const auto p = shot<R, damping::None, position::Euler>(origin<R>, launch<R>, gravity<R>, R(1),
+                                                         R(1) / R(64), 64);
+  constexpr R t = R(1) / R(64);
+  return p.position().y == R(4) + R(16) - R(16) * t * t * R(64 * 63) / R(2);
+}
+static_assert(euler_lags_a_step<float>());
+static_assert(euler_lags_a_step<double>());
+
+// PerFrame, no acceleration (gravity cancelled by the force): v_n = v0 d^n; SemiImplicit
+// moves by v_k t for k = 1..n, a geometric sum: p_n = p0 + v0 t d (1 - d^n) / (1 - d).
+template <class R>
+constexpr bool per_frame_is_geometric() {
+  const auto p = shot<R, damping::PerFrame, position::SemiImplicit>(
+      origin<R>, launch<R>, Vector3<R>{R(0), R(-0.5), R(0)}, R(0.5), R(0.25), 10);
+  const R d_n = R(1) / R(1024);
+  return p.velocity() == launch<R> * d_n &&
+         p.position() == origin<R> + launch<R> * (R(0.25) * R(0.5) * (R(1) - d_n) / R(0.5));
+}
+static_assert(per_frame_is_geometric<float>());
+static_assert(per_frame_is_geometric<double>());
+
+// An immovable particle (mass set to infinity) does not move, at compile time too.
+template <class R>
+constexpr bool immovable_stays() {
+  Particle<R, damping::PerFrame, position::Kinematic> p;
+  p.set_position(origin<R>);
+  p.set_velocity(launch<R>);
+  p.set_mass(std::numeric_limits<R>::infinity());
+  p.add_force({R(100), R(0), R(0)});
+  p.integrate(R(0.5));
+  return p.position() == origin<R> && p.force_accumulator() == Vector3<R>{};
+}
+static_assert(immovable_stays<float>());
+static_assert(immovable_stays<double>());
+
+template <class R, class D, class P>
+constexpr Particle<R, D, P> rounding_shot(R t) {
+  return shot<R, D, P>({R(1.1), R(2.3), R(0.7)}, {R(3.3), R(9.1), R(-1.7)},
+                       {R(0.3), R(-9.807), R(0.1)}, R(0.97), t, 120);
+}
+
+template <class R, class D, class P>
+void check_compile_time_equals_run_time() {
+  constexpr auto at_compile_time = rounding_shot<R, D, P>(R(1) / R(60));
+  volatile R step = R(1) / R(60);  // keeps the run-time trajectory at run time
+  const auto at_run_time = rounding_shot<R, D, P>(step);
+  CHECK(at_compile_time.position() == at_run_time.position());
+  CHECK(at_compile_time.velocity() == at_run_time.velocity());
+  // Not trivially equal: the inputs round, so the trajectory is not exact.
+  CHECK(at_run_time.position().x != R(0));
+}
+
+}  // namespace
+
+TEST_CASE_TEMPLATE("a trajectory computed at compile time equals the run-time one, bit for bit",
+                   R, float, double) {
+  check_compile_time_equals_run_time<R, damping::None, position::Euler>();
+  check_compile_time_equals_run_time<R, damping::None, position::Kinematic>();
+  check_compile_time_equals_run_time<R, damping::None, position::SemiImplicit>();
+  check_compile_time_equals_run_time<R, damping::None, position::Exact>();
+  check_compile_time_equals_run_time<R, damping::PerFrame, position::Euler>();
+  check_compile_time_equals_run_time<R, damping::PerFrame, position::Kinematic>();
+  check_compile_time_equals_run_time<R, damping::PerFrame, position::SemiImplicit>();
+}
