@@ -1,55 +1,223 @@
-// The accuracy comparison: the reference engine's four ballistic shots, stepped by every
-// compile-time variant of the particle at 30, 60, 120 and 240 frames a second, against the
-// exact solution of the motion each variant models. Prints, per shot, the largest position
-// error over the 5 s flight (metres), the observed order as the frame time halves, and the
-// run time per step of each variant (indicative: for figures to compare, use benchmarks/).
+// accuracy_comparison — every compile-time variant on the same scenes: how far from the true
+// motion it goes, and what a step costs. The README's main command (scripts/demo.sh).
 //
-//   scripts/demo.sh            (builds in release and runs this program)
+// Each variant (Real x damping x position policy) flies the scene at each frame time and is
+// compared, at every frame, with the continuous model it approximates (the closed form for
+// the ballistic shots, Boost.Odeint for the spring; tests/support/accuracy.hpp). Printed:
+//   1. per ballistic shot, the error of every policy combination at 1/30 .. 1/240 s and the
+//      observed order as the frame time halves (the same tables as docs/accuracy.md);
+//   2. one row per variant and frame time: the error (largest over the scene's shots, in
+//      metres), the time per particle-step, and whether the row is on the Pareto front (no
+//      other row is both faster and more accurate).
+// Times are measured here with a steady clock (median of repetitions): rough on a busy
+// machine. `--times FILE` takes them instead from a CSV "variant,ns_per_step" (what
+// scripts/sweep.sh makes from the Google Benchmark run, for the plot in docs/performance.md).
+//
+//   accuracy_comparison [--scene ballistic|spring] [--frame-times 30,60,120,240]
+//                       [--times FILE] [--csv FILE] [--summary-only] [--quick]
+#include <algorithm>
 #include <chrono>
+#include <cstddef>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "accuracy.hpp"
 
 namespace accuracy = pointmass::accuracy;
+using pointmass::Real;
 
 namespace {
 
-/// Nanoseconds per step of variant <D, P> in double on a shot, over many runs at 1/60 s.
-template <class D, class P>
-double nanoseconds_per_step(const accuracy::Scene& s) {
+struct Options {
+  std::string scene = "ballistic";
+  std::vector<double> frame_rates{30, 60, 120, 240};
+  std::map<std::string, double> times;  // from --times
+  const char* csv_path = nullptr;
+  bool summary_only = false;
+  int repetitions = 7;
+};
+
+struct Row {
+  std::string variant;
+  double frame_time;
+  double error;        // metres
+  double ns_per_step;  // per particle-step
+  bool on_front = false;
+};
+
+std::vector<accuracy::Scene> scenes_named(const std::string& name) {
+  if (name == "spring") return {accuracy::spring(false, 10), accuracy::spring(true, 10)};
+  return accuracy::ballistic_scenes();
+}
+
+template <Real R>
+const char* real_name() {
+  return sizeof(R) == sizeof(float) ? "float" : "double";
+}
+
+/// Median nanoseconds per particle-step of variant (R, D, P) on the scenes at 1/60 s.
+template <Real R, class D, class P>
+double measure_time(const std::vector<accuracy::Scene>& scenes, int repetitions) {
   const double h = 1.0 / 60;
-  const long steps = accuracy::steps_for(s, h);
+  const R frame = static_cast<R>(h);
+  std::vector<double> samples;
   double sink = 0;
-  long total = 0;
-  const auto start = std::chrono::steady_clock::now();
-  for (int run = 0; run < 2000; ++run) {
-    auto particle = accuracy::make_particle<double, D, P>(s, h);
-    for (long n = 0; n < steps; ++n) particle.integrate(h);
-    sink += particle.position().z;
-    total += steps;
+  for (int repetition = 0; repetition < repetitions; ++repetition) {
+    long steps_done = 0;
+    const auto start = std::chrono::steady_clock::now();
+    for (const auto& s : scenes) {
+      auto particle = accuracy::make_particle<R, D, P>(s, h);
+      const long steps = accuracy::steps_for(s, h);
+      for (long n = 0; n < steps; ++n) accuracy::step(particle, s, frame);
+      sink += static_cast<double>(particle.position().z);
+      steps_done += steps;
+    }
+    const std::chrono::duration<double, std::nano> elapsed =
+        std::chrono::steady_clock::now() - start;
+    samples.push_back(elapsed.count() / static_cast<double>(steps_done));
   }
-  const std::chrono::duration<double, std::nano> elapsed = std::chrono::steady_clock::now() - start;
-  if (sink == 0.125) std::puts("");  // keeps the runs from being optimised away
-  return elapsed.count() / static_cast<double>(total);
+  if (sink == 0.125) std::puts("");  // uses the result, so the runs cannot be dropped
+  const auto middle = samples.begin() + static_cast<std::ptrdiff_t>(samples.size() / 2);
+  std::nth_element(samples.begin(), middle, samples.end());
+  return *middle;
+}
+
+template <Real R>
+void measure_variants(const Options& options, const std::vector<accuracy::Scene>& scenes,
+                      std::vector<Row>& rows) {
+  accuracy::for_each_combination([&]<class D, class P>() {
+    const std::string variant =
+        std::string(real_name<R>()) + " " + accuracy::combination_name<D, P>();
+    const auto given = options.times.find(variant);
+    const double ns = given != options.times.end()
+                          ? given->second
+                          : measure_time<R, D, P>(scenes, options.repetitions);
+    for (const double rate : options.frame_rates) {
+      const double h = 1 / rate;
+      double error = 0;
+      for (const auto& s : scenes) {
+        const long steps = accuracy::steps_for(s, h);
+        const auto reference = accuracy::reference_trajectory<D>(s, h, steps);
+        const auto flown = accuracy::simulate<R, D, P>(s, h, steps);
+        error = std::max(error, accuracy::global_error(flown, reference).position);
+      }
+      rows.push_back({variant, h, error, ns});
+    }
+  });
+}
+
+void mark_pareto_front(std::vector<Row>& rows) {
+  for (auto& row : rows) {
+    row.on_front = std::none_of(rows.begin(), rows.end(), [&](const Row& other) {
+      return other.ns_per_step <= row.ns_per_step && other.error <= row.error &&
+             (other.ns_per_step < row.ns_per_step || other.error < row.error);
+    });
+  }
+}
+
+bool read_times(const char* path, std::map<std::string, double>& times) {
+  std::ifstream in(path);
+  if (!in) return false;
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto comma = line.rfind(',');
+    if (comma == std::string::npos || line.rfind("variant,", 0) == 0) continue;
+    times[line.substr(0, comma)] = std::strtod(line.c_str() + comma + 1, nullptr);
+  }
+  return true;
+}
+
+int usage(const char* program) {
+  std::fprintf(stderr,
+               "usage: %s [--scene ballistic|spring] [--frame-times 30,60,...] [--times FILE]\n"
+               "          [--csv FILE] [--summary-only] [--quick]\n",
+               program);
+  return 2;
 }
 
 }  // namespace
 
-int main() {
-  std::puts("pointmass: accuracy of every policy combination on the reference engine's ballistic shots");
-  std::puts("(largest position error in metres over 5 s against the exact solution, double;");
-  std::puts(" 'exact' = the step is the model's exact flow, the error is rounding)\n");
-  for (const accuracy::Scene& s : accuracy::ballistic_scenes()) {
-    std::printf("## %s: mass %g kg, damping %g per second\n\n", s.name.c_str(), s.mass, s.damping);
-    std::fputs(accuracy::error_table(s).c_str(), stdout);
-    std::puts("");
+int main(int argc, char** argv) {
+  Options options;
+  for (int i = 1; i < argc; ++i) {
+    const std::string argument = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (argument == "--scene" && has_value) {
+      options.scene = argv[++i];
+      if (options.scene != "ballistic" && options.scene != "spring") return usage(argv[0]);
+    } else if (argument == "--frame-times" && has_value) {
+      options.frame_rates.clear();
+      std::stringstream list(argv[++i]);
+      for (std::string rate; std::getline(list, rate, ',');) {
+        const double value = std::strtod(rate.c_str(), nullptr);
+        if (!(value > 0)) return usage(argv[0]);
+        options.frame_rates.push_back(value);
+      }
+    } else if (argument == "--times" && has_value) {
+      if (!read_times(argv[++i], options.times)) {
+        std::fprintf(stderr, "cannot read %s\n", argv[i]);
+        return 1;
+      }
+    } else if (argument == "--csv" && has_value) {
+      options.csv_path = argv[++i];
+    } else if (argument == "--summary-only") {
+      options.summary_only = true;
+    } else if (argument == "--quick") {
+      options.repetitions = 1;
+    } else {
+      return usage(argv[0]);
+    }
   }
-  std::puts("## run time per step (double, pistol shot, 1/60 s; indicative)\n");
-  const accuracy::Scene pistol = accuracy::ballistic_scenes()[0];
-  accuracy::for_each_combination([&]<class D, class P>() {
-    std::printf("%-34s %6.2f ns\n", accuracy::combination_name<D, P>().c_str(),
-                nanoseconds_per_step<D, P>(pistol));
-  });
+  const auto scenes = scenes_named(options.scene);
+
+  if (!options.summary_only && options.scene == "ballistic") {
+    std::puts("pointmass: accuracy of every policy combination on the reference engine's ballistic shots");
+    std::puts("(largest position error in metres over 5 s against the exact solution, double;");
+    std::puts(" 'exact' = the step is the model's exact flow, the error is rounding)\n");
+    for (const auto& s : scenes) {
+      std::printf("## %s: mass %g kg, damping %g per second\n\n", s.name.c_str(), s.mass, s.damping);
+      std::fputs(accuracy::error_table(s).c_str(), stdout);
+      std::puts("");
+    }
+  }
+
+  std::vector<Row> rows;
+  measure_variants<float>(options, scenes, rows);
+  measure_variants<double>(options, scenes, rows);
+  mark_pareto_front(rows);
+
+  std::printf("## every variant: error (largest over the %s scenes, m) and time per particle-step\n\n",
+              options.scene.c_str());
+  std::printf("%-38s %8s %11s %9s  %s\n", "variant (Real Damping + Position)", "frame", "error (m)",
+              "ns/step", "front");
+  for (const auto& row : rows) {
+    std::printf("%-38s   1/%-4.0f %11.3e %9.2f  %s\n", row.variant.c_str(), 1 / row.frame_time,
+                row.error, row.ns_per_step, row.on_front ? "*" : "");
+  }
+  std::puts("\n* on the Pareto front: no other variant is both faster and more accurate.");
+  std::puts(options.times.empty()
+                ? "Times: steady clock, median of repetitions on this machine (rough)."
+                : "Times: from the given benchmark results.");
+  std::puts("The run-time-against-error plot over 1/15 .. 1/480 s: docs/performance.md.");
+
+  if (options.csv_path != nullptr) {
+    std::FILE* csv = std::fopen(options.csv_path, "w");
+    if (csv == nullptr) {
+      std::fprintf(stderr, "cannot write %s\n", options.csv_path);
+      return 1;
+    }
+    std::fprintf(csv, "scene,variant,frame_time,error_m,ns_per_step,on_front\n");
+    for (const auto& row : rows) {
+      std::fprintf(csv, "%s,%s,%.17g,%.6e,%.4f,%d\n", options.scene.c_str(), row.variant.c_str(),
+                   row.frame_time, row.error, row.ns_per_step, row.on_front ? 1 : 0);
+    }
+    std::fclose(csv);
+  }
   return 0;
 }

@@ -4,9 +4,11 @@ if(POINTMASS_BUILD_TESTS)
   add_test(NAME example.quick_start COMMAND quick_start)
   set_tests_properties(example.quick_start PROPERTIES
     PASS_REGULAR_EXPRESSION "after 1 s: x 0\\.000 y 2[01]\\.[0-9]+ z 39\\.[0-9]+ m")
-  # The README quotes the program whole: the two must not drift apart.
-  add_test(NAME docs.readme_quotes_quick_start
-    COMMAND ${CMAKE_COMMAND} -DREADME=${PROJECT_SOURCE_DIR}/README.md
-            -DSOURCE=${CMAKE_CURRENT_SOURCE_DIR}/quick_start.cpp
-            -P ${PROJECT_SOURCE_DIR}/cmake/CheckQuoted.cmake)
+  # The README and docs/examples.md quote the examples: they must not drift apart.
+  file(GLOB _example_sources "${CMAKE_CURRENT_SOURCE_DIR}/*.cpp")
+  foreach(document IN ITEMS README.md docs/examples.md)
+    add_test(NAME docs.quotes.${document}
+      COMMAND ${CMAKE_COMMAND} -DDOCUMENT=${PROJECT_SOURCE_DIR}/${document}
+              "-DSOURCES=${_example_sources}" -P ${PROJECT_SOURCE_DIR}/cmake/CheckQuoted.cmake)
+  endforeach()
 endif()
