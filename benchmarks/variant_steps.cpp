@@ -24,12 +24,6 @@
 // run time), never through benchmark::DoNotOptimize, and main checks at start-up that a step
 // of every benchmarked loop moves every particle and that the hand-written loops agree with
 // the library: otherwise the timings would be of no work, and the program stops.
-// clang -O3 cannot vectorise the step loop of a float system with damping::Exact, and says
-// so as a warning (-Wpass-failed) about the loop's vectorisation pragma; that loop is timed
-// here as it is (scalar), so the warning is not an error in this program.
-#if defined(__clang__)
-#pragma clang diagnostic ignored "-Wpass-failed"
-#endif
 
 #include <pointmass/particle_system.hpp>
 

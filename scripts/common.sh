@@ -2,8 +2,8 @@
 # Sourced, not run.
 
 # The Debian packages a full build and test run needs.
-POINTMASS_PACKAGES=(cmake ninja-build g++ clang libboost-dev doctest-dev libbenchmark-dev
-                    libtbb-dev gnuplot-nox)
+POINTMASS_PACKAGES=(cmake ninja-build g++ clang libclang-rt-14-dev libboost-dev doctest-dev
+                    libbenchmark-dev libtbb-dev gnuplot-nox doxygen pkg-config)
 
 # Installs those of the named Debian packages that are missing (apt-get update first, once).
 ensure_packages() {

@@ -41,6 +41,42 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
+namespace pointmass::detail {
+
+/// How many terms of the phi series reach R's precision for |x| < 1/4: the first omitted
+/// term, 4^-n / (n + 2)!, is below a quarter of an ulp (float 7, double 12, long double 14).
+template <class R>
+inline constexpr int phi_terms = sizeof(R) == sizeof(float) ? 7 : sizeof(R) == sizeof(double) ? 12 : 14;
+
+/// 1 / (n + Offset)! for n = 0 .. phi_terms<R> - 1 (a plain array: usable in device code).
+template <class R>
+struct PhiCoefficients {
+  R value[phi_terms<R>];
+};
+template <int Offset, class R>
+POINTMASS_HD constexpr PhiCoefficients<R> make_phi_coefficients() noexcept {
+  PhiCoefficients<R> coefficients{};
+  R factorial = R(1);
+  for (int n = 2; n <= Offset; ++n) factorial *= R(n);
+  for (int n = 0; n < phi_terms<R>; ++n) {
+    coefficients.value[n] = R(1) / factorial;
+    factorial *= R(n + Offset + 1);
+  }
+  return coefficients;
+}
+
+/// phi_Offset(x) = sum_{n>=0} x^n / (n + Offset)!, by Horner's rule, for |x| < 1/4. The
+/// coefficients are a local constant (computed at compile time), so device code can read them.
+template <int Offset, class R>
+POINTMASS_HD constexpr R phi_series(R x) noexcept {
+  constexpr PhiCoefficients<R> c = make_phi_coefficients<Offset, R>();
+  R sum = c.value[phi_terms<R> - 1];
+  for (int n = phi_terms<R> - 2; n >= 0; --n) sum = sum * x + c.value[n];
+  return sum;
+}
+
+}  // namespace pointmass::detail
+
 namespace pointmass::damping {
 
 /// A damping value d in [0, 1]; the states of the policies that store one.
@@ -149,8 +185,8 @@ struct AccelerateThenDamp {
 ///   v(t) = v0 e^(kt) + a (e^(kt) - 1) / k = v0 d^t + a t phi1(kt),  phi1(x) = (e^x - 1) / x,
 /// which this policy evaluates with expm1, so d -> 1 (k -> 0) stays accurate and d = 1
 /// reduces to v0 + a t. d = 0 gives v1 = 0 (the limit). No truncation error at any step;
-/// costs one expm1 a step (ln d is computed once, when the damping is set). Pair it with
-/// position::Exact for an exact position too.
+/// costs one expm1 a step (ln d is computed once, when the damping is set). Its factors also
+/// carry phi2, so position::Exact gives the exact position at no further cost.
 struct Exact {
   template <Real R>
   class State {
@@ -169,18 +205,25 @@ struct Exact {
 
   template <Real R>
   struct Factors {
-    R kept;      ///< e^x = d^t, the fraction of v0 kept
-    R phi1;      ///< (e^x - 1) / x: 1 at x = 0, 0 at x = -infinity
-    R log_kept;  ///< x = k t, ln of the fraction kept over the step
+    R kept;  ///< e^x = d^t, the fraction of v0 kept over the step (x = k t)
+    R phi1;  ///< (e^x - 1) / x: 1 at x = 0, 0 at x = -infinity
+    R phi2;  ///< (e^x - 1 - x) / x^2: 1/2 at x = 0, 0 at x = -infinity (for position::Exact)
   };
 
+  /// Once per step: one expm1, and for |x| < 1/4 the series of phi2 (where (phi1 - 1) / x
+  /// would cancel); beyond, (phi1 - 1) / x loses at most a factor 1 / |x| < 4 to rounding.
   template <Real R, class T>
   POINTMASS_HD static Factors<R> factors(const State<R>& state, const T& t) noexcept {
     const R seconds = in_seconds(t);
-    if (state.log_value() == R(0) || seconds == R(0)) return {R(1), R(1), R(0)};
-    const R x = state.log_value() * seconds;  // -infinity when d = 0
+    // x = k t: -infinity when d = 0; zero when d = 1, when t = 0, or when d is just below 1
+    // and the step so short that the product underflows: then nothing is taken away.
+    const R x = seconds == R(0) ? R(0) : state.log_value() * seconds;
+    if (x == R(0)) return {R(1), R(1), R(0.5)};
+    if (x == -real_infinity<R>) return {R(0), R(0), R(0)};
     const R kept_minus_one = real_expm1(x);
-    return {kept_minus_one + R(1), kept_minus_one / x, x};
+    const R phi1 = kept_minus_one / x;
+    const R phi2 = real_abs(x) < R(0.25) ? detail::phi_series<2>(x) : (phi1 - R(1)) / x;
+    return {kept_minus_one + R(1), phi1, phi2};
   }
   template <class V, class A, class T, class R>
   POINTMASS_HD static constexpr V velocity(const V& v0, const A& a, const T& t,

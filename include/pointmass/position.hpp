@@ -24,9 +24,7 @@
 // dimensioned quantities alike.
 #pragma once
 
-#include <array>
 #include <concepts>
-#include <cstddef>
 #include <type_traits>
 
 #include "config.hpp"
@@ -70,82 +68,30 @@ struct SemiImplicit {
 
 namespace detail {
 
-/// How many terms of the phi series reach R's precision for |x| < 1/4: the first omitted
-/// term, 4^-n / (n + 2)!, is below a quarter of an ulp (float 7, double 12, long double 14).
-template <class R>
-inline constexpr int phi_terms = sizeof(R) == sizeof(float) ? 7 : sizeof(R) == sizeof(double) ? 12 : 14;
-
-/// 1 / (n + Offset)! for n = 0 .. phi_terms<R> - 1, computed at compile time.
-template <int Offset, class R>
-constexpr std::array<R, phi_terms<R>> make_phi_coefficients() noexcept {
-  std::array<R, phi_terms<R>> coefficients{};
-  R factorial = R(1);
-  for (int n = 2; n <= Offset; ++n) factorial *= R(n);
-  for (int n = 0; n < phi_terms<R>; ++n) {
-    coefficients[static_cast<std::size_t>(n)] = R(1) / factorial;
-    factorial *= R(n + Offset + 1);
-  }
-  return coefficients;
-}
-template <int Offset, class R>
-inline constexpr std::array<R, phi_terms<R>> phi_coefficients = make_phi_coefficients<Offset, R>();
-
-/// phi_Offset(x) = sum_{n>=0} x^n / (n + Offset)!, by Horner's rule, for |x| < 1/4.
-template <int Offset, class R>
-POINTMASS_HD constexpr R phi_series(R x) noexcept {
-  const auto& c = phi_coefficients<Offset, R>;
-  R sum = c[phi_terms<R> - 1];
-  for (int n = phi_terms<R> - 2; n >= 0; --n) sum = sum * x + c[static_cast<std::size_t>(n)];
-  return sum;
-}
-
-/// The damping's ln-of-fraction-kept over the step: the factors' `log_kept`, or zero for a
-/// policy without damping (empty factors).
-template <class R, class F>
-POINTMASS_HD constexpr R log_kept(const F& factors) noexcept {
-  if constexpr (std::is_empty_v<F>) {
-    return R(0);
-  } else {
-    return factors.log_kept;
-  }
-}
-
-/// phi1(x) = (e^x - 1) / x: from the factors where the damping computed it, else the series.
-template <class R, class F>
-POINTMASS_HD constexpr R phi1_of(const F& factors, R x) noexcept {
-  if constexpr (requires { factors.phi1; }) {
-    return factors.phi1;
-  } else {
-    return phi_series<1>(x);
-  }
-}
-
+/// Factors an exact position can use: phi1 and phi2 of the step (damping::Exact's), or none
+/// at all (damping::None: no damping).
 template <class F>
-concept ExactFactors = std::is_empty_v<F> || requires(const F& f) { f.log_kept; };
+concept ExactFactors = std::is_empty_v<F> || requires(const F& f) {
+  f.phi1;
+  f.phi2;
+};
 
 }  // namespace detail
 
 /// The exact position for constant acceleration a and per-second damping (rate k = ln d):
 ///   p(t) = p0 + v0 t phi1(kt) + a t^2 phi2(kt),   phi2(x) = (e^x - 1 - x) / x^2,
-/// and, since v1 - v0 - a t = k (v0 t phi1 + a t^2 phi2), equivalently
-///   p(t) = p0 + (v1 - v0 - a t) / k.
-/// For |kt| < 1/4 phi1 comes from the damping's factors and phi2 from its series (no
-/// cancellation); beyond, the second
-/// form, which needs no transcendental function (its cancellation costs at most a factor
-/// 1 / |kt| < 4 in relative rounding error).
-/// Without damping (k = 0) it is the Kinematic form. Needs damping::Exact or damping::None,
-/// whose factors carry kt.
+/// with phi1 and phi2 from damping::Exact's factors (computed once per step). Without damping
+/// (damping::None, k = 0: phi1 = 1, phi2 = 1/2) it is the Kinematic form.
 struct Exact {
   template <class P, class V, class A, class T, class F>
     requires detail::ExactFactors<F>
-  POINTMASS_HD static constexpr P position(const P& p0, const V& v0, const V& v1, const A& a,
+  POINTMASS_HD static constexpr P position(const P& p0, const V& v0, const V&, const A& a,
                                            const T& t, const F& factors) noexcept {
-    using R = scalar_t<T>;
-    const R x = detail::log_kept<R>(factors);
-    if (real_abs(x) < R(0.25)) {
-      return p0 + v0 * (t * detail::phi1_of(factors, x)) + a * (t * t * detail::phi_series<2>(x));
+    if constexpr (std::is_empty_v<F>) {
+      return Kinematic::position(p0, v0, v0, a, t, factors);
+    } else {
+      return p0 + v0 * (t * factors.phi1) + a * (t * t * factors.phi2);
     }
-    return p0 + (v1 - v0 - a * t) * (t / x);
   }
 };
 
