@@ -29,25 +29,12 @@ namespace {
 constexpr int particle_count = 1024;
 constexpr int frames = 150;
 
-template <class R, class D, class P>
-void launch(pm::Particle<R, D, P>& particle, const pm::scenes::BallisticShot<R>& shot) {
-  pm::scenes::launch(particle, shot);
-}
-template <class R, class D, class P>
-void launch(pm::units::Particle<R, D, P>& particle, const pm::scenes::BallisticShot<R>& shot) {
-  particle.set_position(pm::scenes::ballistic_origin<R> * si::meters);
-  particle.set_velocity(shot.velocity * si::meters_per_second);
-  particle.set_acceleration(shot.acceleration * si::meters_per_second_squared);
-  particle.set_mass(shot.mass * si::kilograms);
-  if constexpr (pm::units::Particle<R, D, P>::stores_damping) particle.set_damping(shot.damping);
-}
-
 template <class Particle, class R>
 void run_scene(benchmark::State& state, const auto& frame, const auto& push) {
   std::vector<Particle> particles(particle_count);
   for (auto _ : state) {
     for (std::size_t i = 0; i < particles.size(); ++i) {
-      launch(particles[i], pm::scenes::ballistic_shots<R>[i % 4]);
+      pm::scenes::launch(particles[i], pm::scenes::ballistic_shots<R>[i % 4]);
     }
     for (int f = 0; f < frames; ++f) {
       for (auto& particle : particles) {

@@ -39,17 +39,29 @@ inline constexpr std::array<BallisticShot<R>, 4> ballistic_shots{{
     {"laser", R(0.1), {R(0), R(0), R(100)}, {R(0), R(0), R(0)}, R(0.99)},
 }};
 
-/// Puts a particle at the start of a shot (any particle type with the core setters).
+namespace detail {
+/// The scene's vector v as a Vector3 of the particle's quantity T (through its QuantitySet).
+template <class T, class Particle, Real R>
+constexpr Vector3<T> as_quantities(const Vector3<R>& v) {
+  using Q = typename Particle::quantities;
+  using real = typename Particle::real;
+  return {Q::template make<T>(real(v.x)), Q::template make<T>(real(v.y)),
+          Q::template make<T>(real(v.z))};
+}
+}  // namespace detail
+
+/// Puts a particle at the start of a shot: any BasicParticle, over plain numbers or SI
+/// quantities (units.hpp), in any precision.
 template <class Particle, Real R>
 constexpr void launch(Particle& particle, const BallisticShot<R>& shot) {
-  using real = typename Particle::real;
-  particle.set_position({real(ballistic_origin<R>.x), real(ballistic_origin<R>.y),
-                         real(ballistic_origin<R>.z)});
-  particle.set_velocity({real(shot.velocity.x), real(shot.velocity.y), real(shot.velocity.z)});
+  using P = Particle;
+  particle.set_position(detail::as_quantities<typename P::length_type, P>(ballistic_origin<R>));
+  particle.set_velocity(detail::as_quantities<typename P::velocity_type, P>(shot.velocity));
   particle.set_acceleration(
-      {real(shot.acceleration.x), real(shot.acceleration.y), real(shot.acceleration.z)});
-  particle.set_mass(real(shot.mass));
-  if constexpr (Particle::stores_damping) particle.set_damping(real(shot.damping));
+      detail::as_quantities<typename P::acceleration_type, P>(shot.acceleration));
+  particle.set_mass(P::quantities::template make<typename P::mass_type>(
+      typename P::real(shot.mass)));
+  if constexpr (P::stores_damping) particle.set_damping(typename P::real(shot.damping));
 }
 
 /// A mass on a spring to a fixed anchor at the origin: force -stiffness * position -

@@ -21,21 +21,6 @@ using pm::Vector3;
 
 namespace {
 
-/// The same shot, launched on a plain particle and on an SI one.
-template <class R, class Particle>
-void launch_plain(Particle& particle, const pm::scenes::BallisticShot<R>& shot) {
-  pm::scenes::launch(particle, shot);
-}
-
-template <class R, class D, class P>
-void launch_si(pm::units::Particle<R, D, P>& particle, const pm::scenes::BallisticShot<R>& shot) {
-  particle.set_position(pm::scenes::ballistic_origin<R> * si::meters);
-  particle.set_velocity(shot.velocity * si::meters_per_second);
-  particle.set_acceleration(shot.acceleration * si::meters_per_second_squared);
-  particle.set_mass(shot.mass * si::kilograms);
-  if constexpr (pm::units::Particle<R, D, P>::stores_damping) particle.set_damping(shot.damping);
-}
-
 template <class R>
 Vector3<R> numbers(const Vector3<R>& v) {
   return v;
@@ -53,8 +38,8 @@ void check_same_trajectories(R frame, int steps) {
     CAPTURE(shot.name);
     pm::Particle<R, D, P> plain;
     pm::units::Particle<R, D, P> with_units;
-    launch_plain(plain, shot);
-    launch_si(with_units, shot);
+    pm::scenes::launch(plain, shot);
+    pm::scenes::launch(with_units, shot);
     const Vector3<R> push{R(0.5), R(-2), R(1.25)};  // newtons
     for (int step = 0; step < steps; ++step) {
       plain.add_force(push);
