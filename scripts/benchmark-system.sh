@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# Regenerates the tables of docs/performance.md: builds benchmarks/system_step.cpp with
-# -O3 -march=native (Release), runs it with interleaved repetitions and prints the medians
-# (M particle-steps/s) and their ratios as Markdown. Usage: scripts/benchmark-system.sh [reps]
+# Regenerates the ParticleSystem tables of docs/performance.md: builds
+# benchmarks/system_step.cpp with -O3 -march=native (Release), runs it with interleaved
+# repetitions, prints the medians (M particle-steps/s) and their ratios as Markdown, and
+# writes them into docs/performance.md between the system markers.
+# Usage: scripts/benchmark-system.sh [repetitions]
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+ensure_packages cmake ninja-build g++ libbenchmark-dev libtbb-dev python3
 repetitions=${1:-5}
 build="$POINTMASS_ROOT/build/benchmark-system"
 cmake -S "$POINTMASS_ROOT" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
@@ -14,7 +17,8 @@ trap 'rm -f "$json"' EXIT
 "$build/benchmarks/system_step" --benchmark_repetitions="$repetitions" \
   --benchmark_enable_random_interleaving=true --benchmark_min_time=0.05 \
   --benchmark_report_aggregates_only=true --benchmark_format=json >"$json"
-python3 - "$json" <<'PY'
+tables="$build/tables.md"
+python3 - "$json" >"$tables" <<'PY'
 import json, sys
 data = json.load(open(sys.argv[1]))
 rate = {b["run_name"]: b["items_per_second"] / 1e6
@@ -60,3 +64,6 @@ for label, name in [("default: uniform per-second damping and gravity", "Sparks"
     v = rate[f"BM_System<{name}<float>>/100000"]
     print(f"| {label} | {v:,.0f} | {v / base:.2f} |")
 PY
+cat "$tables"
+replace_between_markers "$POINTMASS_ROOT/docs/performance.md" system "$tables"
+echo "updated docs/performance.md"

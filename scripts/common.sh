@@ -29,3 +29,16 @@ configure_and_build() {
 }
 
 POINTMASS_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+
+# replace_between_markers DOC NAME FILE: replaces what stands between the lines
+# <!-- NAME:begin --> and <!-- NAME:end --> of DOC with the contents of FILE.
+replace_between_markers() {
+  local doc=$1 name=$2 file=$3
+  grep -q "<!-- $name:begin -->" "$doc" && grep -q "<!-- $name:end -->" "$doc" ||
+    { echo "$doc has no <!-- $name:begin --> ... <!-- $name:end --> markers" >&2; return 1; }
+  awk -v table="$file" -v begin="<!-- $name:begin -->" -v end="<!-- $name:end -->" '
+    $0 == end { skipping = 0 }
+    !skipping { print }
+    $0 == begin { while ((getline line < table) > 0) print line; skipping = 1 }
+  ' "$doc" > "$doc.new" && mv "$doc.new" "$doc"
+}

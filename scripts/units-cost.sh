@@ -35,11 +35,6 @@ done
 echo "$table"
 
 doc="$POINTMASS_ROOT/docs/units.md"
-grep -q '<!-- units-cost:begin -->' "$doc" || { echo "$doc: no units-cost markers" >&2; exit 1; }
 printf '%s\n' "$table" > "$dir/table.md"
-awk -v table="$dir/table.md" '
-  /<!-- units-cost:end -->/ { skipping = 0 }
-  !skipping { print }
-  /<!-- units-cost:begin -->/ { while ((getline line < table) > 0) print line; skipping = 1 }
-' "$doc" > "$doc.new" && mv "$doc.new" "$doc"
+replace_between_markers "$doc" units-cost "$dir/table.md"
 echo "updated $doc"

@@ -621,7 +621,31 @@ class ParticleSystem {
   /// Called by step; call it yourself after stepping through step_particle elsewhere.
   void finish_step() {
     if constexpr (has_lifetime) {
-      kill_if([this](std::size_t i) { return !(arrays_.age[i] < arrays_.lifetime[i]); });
+      // kill_if's order and result, but a step expires few particles: a block of
+      // vector_block particles none of which has expired (a test that vectorises) is
+      // skipped whole; only a block with an expiry is walked one particle at a time.
+      const R* age = arrays_.age;
+      const R* lifetime = arrays_.lifetime;
+      std::size_t i = 0;
+      while (i < size_) {
+        if (i % vector_block == 0 && i + vector_block <= size_) {
+          bool any_expired = false;
+          for (std::size_t k = i; k < i + vector_block; ++k) {
+            any_expired |= !(age[k] < lifetime[k]);
+          }
+          if (!any_expired) {
+            i += vector_block;
+            continue;
+          }
+        }
+        if (age[i] < lifetime[i]) {
+          ++i;
+        } else {
+          const std::size_t last = size_ - 1;
+          if (i != last) move_particle(last, i);
+          set_size(last);
+        }
+      }
     }
   }
 

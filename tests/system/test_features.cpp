@@ -213,6 +213,34 @@ TEST_CASE_TEMPLATE("lifetime: particles age by each step and expire when age rea
   CHECK(system.position(0).x == R(2));
 }
 
+TEST_CASE_TEMPLATE("lifetime in a large system: exactly the expired particles go, every step",
+                   R, float, double) {
+  // 1,000 particles (many blocks of 16) with lifetimes (n + 1/2) / 64 s in a shuffled order,
+  // stepped by 1/64 s (exact in binary): after step k, exactly those with n >= k are alive,
+  // each of them once, whatever the order the swap-removes left them in.
+  constexpr std::size_t count = 1000;
+  ParticleSystem<R, damping::None, position::Euler, features::Lifetime> system(count);
+  std::vector<std::size_t> order(count);
+  for (std::size_t n = 0; n < count; ++n) order[n] = n;
+  std::shuffle(order.begin(), order.end(), std::mt19937(42));
+  for (const std::size_t n : order) {
+    const std::size_t i = system.spawn({R(n), R(0), R(0)}, {});  // x names the particle
+    system.set_lifetime(i, (R(n) + R(0.5)) / R(64));
+  }
+  for (std::size_t k = 1; k <= 40; ++k) {
+    system.step(R(1) / R(64));
+    REQUIRE(system.size() == count - k);
+    std::vector<std::size_t> alive;
+    for (std::size_t i = 0; i < system.size(); ++i) {
+      CHECK(system.age(i) < system.lifetime(i));
+      alive.push_back(static_cast<std::size_t>(system.position(i).x));
+    }
+    std::sort(alive.begin(), alive.end());
+    CHECK(alive.front() == k);
+    CHECK(std::adjacent_find(alive.begin(), alive.end()) == alive.end());  // no duplicates
+  }
+}
+
 TEST_CASE_TEMPLATE("capacity is reserved up front; a step allocates nothing; growth keeps data",
                    R, float, double) {
   ParticleSystem<R> system(64);
