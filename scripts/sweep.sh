@@ -158,8 +158,8 @@ def frame(r):
 out = []
 out.append(f"Measured by `scripts/sweep.sh {repetitions}` on {context.get('num_cpus')} CPUs at "
            f"{context.get('mhz_per_cpu')} MHz (Release, `-O3`), medians of {repetitions} "
-           "interleaved repetitions; other work was running on the machine, so compare the "
-           "ratios (taken within the run) rather than the absolute times.\n")
+           "interleaved repetitions. Absolute times vary between machines and runs; the ratios "
+           "(taken within one run) are the figures to compare.\n")
 titles = {"ballistic": "Ballistic shots (`pareto-ballistic.svg`)",
           "spring": "Mass on a spring (`pareto-spring.svg`)"}
 for scene in ("ballistic", "spring"):
