@@ -1,5 +1,5 @@
-// pointmass/pointmass.hpp — the umbrella header: the whole core, standard library only.
-// (Boost.Units support is apart, in <pointmass/units.hpp>.)
+// pointmass/pointmass.hpp — the umbrella header: the whole library but the Boost.Units face,
+// standard library only. (Boost.Units support is apart, in <pointmass/units.hpp>.)
 #pragma once
 
 #include "config.hpp"
@@ -7,8 +7,9 @@
 #include "forces.hpp"
 #include "gravity.hpp"
 #include "particle.hpp"
+#include "particle_system.hpp"
 #include "position.hpp"
 #include "quantities.hpp"
 #include "real.hpp"
-#include "vector3.hpp"
 #include "scenes.hpp"
+#include "vector3.hpp"

@@ -65,14 +65,16 @@ inline Sample to_sample(const State& y) {
 }
 
 /// The model's solution at t = n h, n = 0 .. steps (steps + 1 samples), by dopri5 with dense
-/// output at tolerance 1e-12.
+/// output at absolute and relative `tolerance` (1e-12 unless a test needs it tighter).
 inline std::vector<Sample> odeint_trajectory(const Model& model, const Vector3<double>& p0,
-                                             const Vector3<double>& v0, double h, long steps) {
+                                             const Vector3<double>& v0, double h, long steps,
+                                             double tolerance = 1e-12) {
   namespace odeint = boost::numeric::odeint;
   std::vector<Sample> samples;
   samples.reserve(static_cast<std::size_t>(steps) + 1);
   State y = to_state(p0, v0);
-  auto stepper = odeint::make_dense_output(1e-12, 1e-12, odeint::runge_kutta_dopri5<State>());
+  auto stepper =
+      odeint::make_dense_output(tolerance, tolerance, odeint::runge_kutta_dopri5<State>());
   odeint::integrate_n_steps(stepper, model, y, 0.0, h, static_cast<std::size_t>(steps),
                             [&](const State& state, double) { samples.push_back(to_sample(state)); });
   if (samples.size() != static_cast<std::size_t>(steps) + 1) {
