@@ -209,6 +209,28 @@ std::vector<reference::Sample> simulate(const Scene& s, double h, long steps) {
 
 inline long steps_for(const Scene& s, double h) { return std::lround(s.duration / h); }
 
+/// Far from the origin: free flight at (10, 0, 5) m/s from (1e6, 0, 0) m for `steps` steps of
+/// h = 1/60 s, flown in float and in double. Returns the final positions (in double).
+struct FarFlight {
+  Vector3<double> single;  ///< the float particle's
+  Vector3<double> twin;    ///< the double particle's
+  double h = 0;            ///< the step, s
+};
+inline FarFlight fly_far_from_origin(long steps) {
+  const double h = 1.0 / 60;
+  Particle<float, damping::None, position::Euler> single;
+  Particle<double, damping::None, position::Euler> twin;
+  single.set_position({1e6f, 0.0f, 0.0f});
+  twin.set_position({1e6, 0.0, 0.0});
+  single.set_velocity({10.0f, 0.0f, 5.0f});
+  twin.set_velocity({10.0, 0.0, 5.0});
+  for (long n = 0; n < steps; ++n) {
+    single.integrate(static_cast<float>(h));
+    twin.integrate(h);
+  }
+  return {widen(single.position()), twin.position(), h};
+}
+
 /// The reference for combination D on scene s: the closed form without a spring, Odeint
 /// otherwise.
 template <class D>
