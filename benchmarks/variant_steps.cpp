@@ -42,6 +42,17 @@
 
 namespace {
 
+/// The counters every benchmark here reports, for `steps` particle-steps per iteration:
+/// items processed, "steps", and "per_step" (seconds per particle-step).
+void report_steps(benchmark::State& state, double steps) {
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(steps));
+  state.counters["steps"] = steps;
+  state.counters["per_step"] = benchmark::Counter(
+      steps * static_cast<double>(state.iterations()),
+      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+
 using namespace pointmass;
 namespace accuracy = pointmass::accuracy;
 
@@ -120,12 +131,7 @@ void BM_Particle(benchmark::State& state) {
     benchmark::DoNotOptimize(particles.data());
     benchmark::ClobberMemory();
   }
-  const auto steps = static_cast<double>(scene.frames) * static_cast<double>(particles.size());
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(steps));
-  state.counters["steps"] = steps;
-  state.counters["per_step"] = benchmark::Counter(
-      steps * static_cast<double>(state.iterations()),
-      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  report_steps(state, static_cast<double>(scene.frames) * static_cast<double>(particles.size()));
 }
 
 // --- ParticleSystem ----------------------------------------------------------------------
@@ -171,12 +177,7 @@ void BM_System(benchmark::State& state) {
     benchmark::DoNotOptimize(system.position_x().data());
     benchmark::ClobberMemory();
   }
-  const double steps = static_cast<double>(system_frames * static_cast<long>(system_particles));
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(steps));
-  state.counters["steps"] = steps;
-  state.counters["per_step"] = benchmark::Counter(
-      steps * static_cast<double>(state.iterations()),
-      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  report_steps(state, static_cast<double>(system_frames * static_cast<long>(system_particles)));
 }
 
 // --- hand-written baselines --------------------------------------------------------------
@@ -284,12 +285,7 @@ void BM_Hand(benchmark::State& state) {
     benchmark::DoNotOptimize(arrays.block);
     benchmark::ClobberMemory();
   }
-  const double steps = static_cast<double>(arrays.frames) * static_cast<double>(arrays.size);
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(steps));
-  state.counters["steps"] = steps;
-  state.counters["per_step"] = benchmark::Counter(
-      steps * static_cast<double>(state.iterations()),
-      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  report_steps(state, static_cast<double>(arrays.frames) * static_cast<double>(arrays.size));
 }
 
 /// One step of the sparks (uniform damping and gravity, PerSecond + Euler) by hand.
@@ -342,12 +338,7 @@ void BM_HandSparks(benchmark::State& state) {
     benchmark::DoNotOptimize(arrays.block);
     benchmark::ClobberMemory();
   }
-  const double steps = static_cast<double>(system_frames * static_cast<long>(system_particles));
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(steps));
-  state.counters["steps"] = steps;
-  state.counters["per_step"] = benchmark::Counter(
-      steps * static_cast<double>(state.iterations()),
-      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  report_steps(state, static_cast<double>(system_frames * static_cast<long>(system_particles)));
 }
 
 // --- start-up checks ---------------------------------------------------------------------
