@@ -73,13 +73,13 @@ inline Scene free_flight() {
 
 /// Scene 3: the mass on a spring (scenes::SpringScene: period 1 s), undamped or damped
 /// (friction 0.5 N s/m through add_force and per-second damping 0.5), over `duration`.
-inline Scene spring(bool damped, double duration) {
+inline Scene spring(bool damped, double duration, double stiffness = scenes::SpringScene<double>{}.stiffness) {
   const scenes::SpringScene<double> spring_scene{};
   Scene s;
   s.name = damped ? "damped spring" : "spring";
   s.start_position = spring_scene.start;
   s.mass = spring_scene.mass;
-  s.stiffness = spring_scene.stiffness;
+  s.stiffness = stiffness;
   s.friction = damped ? 0.5 : 0.0;
   s.damping = damped ? 0.5 : 1.0;
   s.duration = duration;
