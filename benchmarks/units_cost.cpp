@@ -12,6 +12,7 @@
 //   ratio SI/plain <configuration>: <median SI CPU time / median plain CPU time>
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -21,31 +22,25 @@
 #include <pointmass/scenes.hpp>
 #include <pointmass/units.hpp>
 
+#include "units_scene.hpp"
+
 namespace pm = pointmass;
 namespace si = boost::units::si;
 
 namespace {
 
-constexpr int particle_count = 1024;
-constexpr int frames = 150;
-
 template <class Particle, class R>
 void run_scene(benchmark::State& state, const auto& frame, const auto& push) {
-  std::vector<Particle> particles(particle_count);
+  std::vector<Particle> particles(pm::test::units_scene_particles);
   for (auto _ : state) {
-    for (std::size_t i = 0; i < particles.size(); ++i) {
-      pm::scenes::launch(particles[i], pm::scenes::ballistic_shots<R>[i % 4]);
-    }
-    for (int f = 0; f < frames; ++f) {
-      for (auto& particle : particles) {
-        particle.add_force(push);
-        particle.integrate(frame);
-      }
-    }
+    pm::test::launch_units_scene(particles);
+    pm::test::fly_units_scene(particles, frame, push);
     benchmark::DoNotOptimize(particles.data());
     benchmark::ClobberMemory();
   }
-  state.SetItemsProcessed(state.iterations() * particle_count * frames);
+  state.SetItemsProcessed(state.iterations() *
+                          static_cast<std::int64_t>(pm::test::units_scene_particles) *
+                          pm::test::units_scene_frames);
 }
 
 template <class R, class D, class P>

@@ -14,26 +14,18 @@
 #include <pointmass/scenes.hpp>
 #include <pointmass/units.hpp>
 
+#include "units_scene.hpp"
+
 namespace pm = pointmass;
 namespace si = boost::units::si;
 
 namespace {
 
-constexpr int particle_count = 1024;
-constexpr int frames = 150;
-
-template <class Particle, class R>
+template <class Particle>
 double run(bool step, const auto& frame, const auto& push) {
-  std::vector<Particle> particles(particle_count);
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    pm::scenes::launch(particles[i], pm::scenes::ballistic_shots<R>[i % 4]);
-  }
-  for (int f = 0; step && f < frames; ++f) {
-    for (auto& particle : particles) {
-      particle.add_force(push);
-      particle.integrate(frame);
-    }
-  }
+  std::vector<Particle> particles(pm::test::units_scene_particles);
+  pm::test::launch_units_scene(particles);
+  if (step) pm::test::fly_units_scene(particles, frame, push);
   double sum = 0;  // the result is printed, so no step can be dropped
   for (std::size_t i = 0; i < particles.size(); ++i) {
     if constexpr (requires { particles[i].position().x.value(); }) {
@@ -50,9 +42,9 @@ double variant(const char* mode) {
   const R frame = R(1) / R(30);
   const pm::Vector3<R> push{R(0.5), R(-2), R(1)};
   if (std::strcmp(mode, "si") == 0) {
-    return run<pm::units::Particle<R, D, P>, R>(true, frame * si::seconds, push * si::newtons);
+    return run<pm::units::Particle<R, D, P>>(true, frame * si::seconds, push * si::newtons);
   }
-  return run<pm::Particle<R, D, P>, R>(std::strcmp(mode, "plain") == 0, frame, push);
+  return run<pm::Particle<R, D, P>>(std::strcmp(mode, "plain") == 0, frame, push);
 }
 
 }  // namespace
