@@ -1,5 +1,6 @@
 // ParticleSystem::step against, in the same run: a hand-written loop of the same maths over
-// plain staggered arrays (the speed of light for this step), a read-modify-write bandwidth
+// plain staggered arrays (the speed of light for this step; once forwards every step, once
+// with the system's alternating traversal), a read-modify-write bandwidth
 // loop over as many bytes, and a loop of scalar Particles (one object per particle).
 // scripts/benchmark-system.sh runs it and turns the medians into docs/performance.md's table.
 // Counters: items_per_second = particle-steps per second.
@@ -155,19 +156,41 @@ void hand_step(R* __restrict px, R* __restrict py, R* __restrict pz, R* __restri
   }
 }
 
+// The traversal ParticleSystem::step uses below its alternation limit, by hand: every other
+// step walks the arrays backwards in chunks of 256, each chunk forwards (within the same
+// size limit).
 template <class R>
-void BM_HandStaggered(benchmark::State& state) {
+void hand_step_backward(R* const* a, std::size_t n, R ax, R ay, R az, R t, R kept) {
+  constexpr std::size_t chunk = 256;
+  std::size_t end = n - n % chunk;
+  hand_step(a[0] + end, a[1] + end, a[2] + end, a[3] + end, a[4] + end, a[5] + end, n - end,
+            ax, ay, az, t, kept);
+  while (end != 0) {
+    end -= chunk;
+    hand_step(a[0] + end, a[1] + end, a[2] + end, a[3] + end, a[4] + end, a[5] + end, chunk,
+              ax, ay, az, t, kept);
+  }
+}
+
+template <class R, bool alternate>
+void hand_loop(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
   StaggeredArrays<R> arrays(n);
   const R t = duration<R>();
   const Vector3<R> g = gravity<R>();
   R** a = arrays.array;
+  const bool alternating =
+      alternate && n * 6 * sizeof(R) <= ParticleSystem<R>::alternation_limit_bytes;
   const std::vector<R> start_x(a[3], a[3] + n), start_y(a[4], a[4] + n),
       start_z(a[5], a[5] + n);  // the velocities, to put back
   std::int64_t steps = 0;
   for (auto _ : state) {
     const R kept = real_pow(R(0.9), t);
-    hand_step(a[0], a[1], a[2], a[3], a[4], a[5], n, g.x, g.y, g.z, t, kept);
+    if (alternating && steps % 2 == 1) {
+      hand_step_backward(a, n, g.x, g.y, g.z, t, kept);
+    } else {
+      hand_step(a[0], a[1], a[2], a[3], a[4], a[5], n, g.x, g.y, g.z, t, kept);
+    }
     benchmark::ClobberMemory();
     refresh_now_and_then(state, steps, [&] {
       std::copy(start_x.begin(), start_x.end(), a[3]);
@@ -176,6 +199,15 @@ void BM_HandStaggered(benchmark::State& state) {
     });
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+template <class R>
+void BM_HandStaggered(benchmark::State& state) {
+  hand_loop<R, false>(state);
+}
+template <class R>
+void BM_HandAlternating(benchmark::State& state) {
+  hand_loop<R, true>(state);
 }
 
 // Read-modify-write of the same six arrays: the memory bound of a step.
@@ -269,6 +301,7 @@ void large(benchmark::internal::Benchmark* b) { b->Arg(10000000); }
   BENCHMARK_TEMPLATE(function, double)->Apply(args)
 
 POINTMASS_BENCH_BOTH(BM_HandStaggered, sizes);
+POINTMASS_BENCH_BOTH(BM_HandAlternating, sizes);
 POINTMASS_BENCH_BOTH(BM_Bandwidth, sizes);
 BENCHMARK_TEMPLATE(BM_System, Sparks<float>)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_System, Sparks<double>)->Apply(sizes);

@@ -32,6 +32,7 @@ for real in ("float", "double"):
     print("| loop | 1,000 | 100,000 | 10,000,000 |\n|---|---|---|---|")
     rows = [("scalar `Particle` objects (the seed's layout)", "BM_Particles<%s>"),
             ("hand-written loop, staggered arrays", "BM_HandStaggered<%s>"),
+            ("hand-written loop, alternating direction like the system", "BM_HandAlternating<%s>"),
             ("`ParticleSystem<%s>::step`", "BM_System<Sparks<%s>>"),
             ("read-modify-write bandwidth (6 arrays)", "BM_Bandwidth<%s>"),
             ("`pointmass::step(par_unseq, ...)`, 2 threads", "BM_SystemParallel<Sparks<%s>>"),
@@ -50,6 +51,8 @@ for real in ("float", "double"):
     print("\n| ratio | value | target |\n|---|---|---|")
     for n in ("1000", "100000", "10000000"):
         print(f"| system / hand-written, {int(n):,} | {r('BM_System<Sparks<%s>>', 'BM_HandStaggered<%s>', n):.2f} | >= 0.9 |")
+    for n in ("1000", "100000", "10000000"):
+        print(f"| system / hand-written alternating, {int(n):,} | {r('BM_System<Sparks<%s>>', 'BM_HandAlternating<%s>', n):.2f} | |")
     print(f"| system / scalar Particles, 100,000 | {r('BM_System<Sparks<%s>>', 'BM_Particles<%s>', '100000'):.1f} | >= 15 |")
     print(f"| parallel system / parallel bandwidth, 10,000,000 | {r('BM_SystemParallel<Sparks<%s>>', 'BM_BandwidthParallel<%s>', '10000000'):.2f} | >= 0.9 |")
     print()

@@ -1,0 +1,96 @@
+// The step's traversal. While the arrays take at most alternation_limit_bytes, successive
+// steps walk the particles forwards and backwards in turn (backwards: the part past the last
+// whole chunk first, then whole chunks of backward_chunk from the last to the first); above
+// the limit every step walks forwards. Either way every particle takes exactly its own step
+// once: the system matches the equivalent Particles bit for bit after every step, for sizes
+// around the vector block and the chunk, and on both sides of the limit.
+#include <doctest/doctest.h>
+
+#include <cstddef>
+#include <random>
+#include <vector>
+
+#include <pointmass/particle_system.hpp>
+
+#include "system_support.hpp"
+
+namespace {
+
+using namespace pointmass;
+using pointmass::test::matches;
+using pointmass::test::random_vector;
+
+// Steps a system of `count` particles and the equivalent Particles `steps` times; checks
+// after each step that they match and that the walk's direction alternates (or not).
+template <class R, class D, class P, class... Features>
+void step_side_by_side(std::size_t count, int steps, bool alternates) {
+  using System = ParticleSystem<R, D, P, Features...>;
+  CAPTURE(count);
+  std::mt19937 engine(static_cast<unsigned>(count));
+  const Vector3<R> gravity{R(0), R(-9.807), R(0)};
+  System system(count);
+  if constexpr (!System::per_particle_acceleration) system.set_acceleration(gravity);
+  if constexpr (System::stores_damping && !System::per_particle_damping) {
+    system.set_damping(R(0.6));
+  }
+  std::vector<Particle<R, D, P>> particles(count);
+  std::uniform_real_distribution<R> damping(R(0.1), R(1));
+  std::size_t rejected = 0;
+  for (auto& particle : particles) {
+    particle.set_position(random_vector(engine, R(100)));
+    particle.set_velocity(random_vector(engine, R(30)));
+    if constexpr (System::per_particle_acceleration) {
+      particle.set_acceleration(random_vector(engine, R(20)));
+    } else {
+      particle.set_acceleration(gravity);
+    }
+    if constexpr (System::per_particle_damping) {
+      particle.set_damping(damping(engine));
+    } else if constexpr (System::stores_damping) {
+      particle.set_damping(R(0.6));
+    }
+    rejected += system.spawn(particle) == System::npos ? 1 : 0;
+  }
+  REQUIRE(rejected == 0);
+  REQUIRE(matches(system, particles));
+  for (int step = 0; step < steps; ++step) {
+    CAPTURE(step);
+    CHECK(system.next_step_backward() == (alternates && step % 2 == 1));
+    const R t = R(1) / R(60 + step);
+    system.step(t);
+    for (auto& particle : particles) particle.integrate(t);
+    REQUIRE(matches(system, particles));
+  }
+}
+
+}  // namespace
+
+TEST_CASE_TEMPLATE("alternating walk: every particle takes its own step, once", R, float,
+                   double) {
+  using System = ParticleSystem<R>;
+  static_assert(System::backward_chunk % System::vector_block == 0);
+  constexpr std::size_t chunk = System::backward_chunk;
+  for (const std::size_t count :
+       {std::size_t{1}, std::size_t{15}, std::size_t{16}, chunk - 1, chunk, chunk + 1,
+        3 * chunk + 17, std::size_t{1000}}) {
+    step_side_by_side<R, damping::PerSecond, position::Euler>(count, 5, true);
+  }
+}
+
+TEST_CASE_TEMPLATE("alternating walk with per-particle values, forces and lifetimes", R, float,
+                   double) {
+  step_side_by_side<R, damping::Exact, position::Exact, features::PerParticleDamping,
+                    features::PerParticleAcceleration, features::Forces, features::Lifetime>(
+      700, 4, true);
+  step_side_by_side<R, damping::PerFrame, position::SemiImplicit,
+                    features::PerParticleAcceleration>(531, 4, true);
+}
+
+TEST_CASE_TEMPLATE("the walk alternates up to the size limit and walks forwards beyond it", R,
+                   float, double) {
+  using System = ParticleSystem<R>;
+  constexpr std::size_t largest =
+      System::alternation_limit_bytes / System::storage_bytes_per_particle;
+  step_side_by_side<R, damping::PerSecond, position::Euler>(largest, 3, true);
+  step_side_by_side<R, damping::PerSecond, position::Euler>(largest + 1, 3, false);
+}
