@@ -613,14 +613,40 @@ class ParticleSystem {
     // A trip count that is a known multiple of every vector width lets g++'s -O2 cost
     // model vectorise without a remainder loop; the remainder runs below.
     const std::size_t blocked = count & ~(vector_block - 1);
-    if constexpr (vectorisable) {
-      POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
-      for (std::size_t k = 0; k < blocked; ++k) step_particle(arrays, begin + k, parameters);
-    } else {  // a power function per particle: no vector loop to ask for
-      for (std::size_t k = 0; k < blocked; ++k) step_particle(arrays, begin + k, parameters);
-    }
+    step_vectorised(arrays, begin, blocked, parameters);
     for (std::size_t k = blocked; k < count; ++k) step_particle(arrays, begin + k, parameters);
   }
+
+  /// Steps particles [begin, end) as step_range does, with the same results, but walks them
+  /// from the end: the part past the last whole chunk of backward_chunk first, then whole
+  /// chunks from the last to the first, each chunk forwards in one vectorised loop.
+  static void step_range_backward(const Arrays& arrays_in, std::size_t begin, std::size_t end,
+                                  const StepParameters& parameters_in) noexcept {
+    const Arrays arrays = arrays_in;  // local copies, as in step_range
+    const StepParameters parameters = parameters_in;
+    std::size_t chunk_end = end - (end - begin) % backward_chunk;
+    step_range(arrays, chunk_end, end, parameters);
+    while (chunk_end != begin) {
+      chunk_end -= backward_chunk;
+      step_vectorised(arrays, chunk_end, backward_chunk, parameters);
+    }
+  }
+
+ private:
+  // Particles [first, first + count), count a multiple of vector_block: the loop marked for
+  // vectorisation (when the configuration can vectorise).
+  POINTMASS_DETAIL_INLINE static void step_vectorised(const Arrays& arrays, std::size_t first,
+                                                      std::size_t count,
+                                                      const StepParameters& parameters) noexcept {
+    if constexpr (vectorisable) {
+      POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
+      for (std::size_t k = 0; k < count; ++k) step_particle(arrays, first + k, parameters);
+    } else {  // a power function per particle: no vector loop to ask for
+      for (std::size_t k = 0; k < count; ++k) step_particle(arrays, first + k, parameters);
+    }
+  }
+
+ public:
 #if defined(__clang__)
 #pragma clang diagnostic pop
 #endif
@@ -674,19 +700,6 @@ class ParticleSystem {
 
   /// True when the next `step` walks the particles backwards (see alternation_limit_bytes).
   bool next_step_backward() const noexcept { return backward_; }
-
-  /// Steps particles [begin, end) as step_range does, with the same results, but walks them
-  /// from the end: the part of the last chunk_size-multiple first, then whole chunks from
-  /// the last to the first, each chunk forwards through step_range's vectorised loop.
-  static void step_range_backward(const Arrays& arrays, std::size_t begin, std::size_t end,
-                                  const StepParameters& parameters) noexcept {
-    std::size_t chunk_end = end - (end - begin) % backward_chunk;
-    step_range(arrays, chunk_end, end, parameters);
-    while (chunk_end != begin) {
-      chunk_end -= backward_chunk;
-      step_range(arrays, chunk_end, chunk_end + backward_chunk, parameters);
-    }
-  }
 
   /// While the arrays take at most this many bytes, `step` walks the particles forwards and
   /// backwards in turn: each step then starts on the particles the step before finished
