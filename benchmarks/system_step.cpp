@@ -157,11 +157,10 @@ void hand_step(R* __restrict px, R* __restrict py, R* __restrict pz, R* __restri
 }
 
 // The traversal ParticleSystem::step uses below its alternation limit, by hand: every other
-// step walks the arrays backwards in chunks of 256, each chunk forwards (within the same
-// size limit).
+// step walks the arrays backwards in whole chunks, each chunk forwards.
 template <class R>
 void hand_step_backward(R* const* a, std::size_t n, R ax, R ay, R az, R t, R kept) {
-  constexpr std::size_t chunk = 256;
+  constexpr std::size_t chunk = ParticleSystem<R>::backward_chunk;
   std::size_t end = n - n % chunk;
   hand_step(a[0] + end, a[1] + end, a[2] + end, a[3] + end, a[4] + end, a[5] + end, n - end,
             ax, ay, az, t, kept);
@@ -172,7 +171,12 @@ void hand_step_backward(R* const* a, std::size_t n, R ax, R ay, R az, R t, R kep
   }
 }
 
-template <class R, bool alternate>
+// How the hand-written loop walks its arrays from one step to the next: always forwards;
+// forwards and backwards in turn as the system does (up to its size limit); or in turn at
+// every size (what the limit avoids).
+enum class Walk { forwards, like_the_system, always_alternating };
+
+template <class R, Walk walk>
 void hand_loop(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
   StaggeredArrays<R> arrays(n);
@@ -180,7 +184,9 @@ void hand_loop(benchmark::State& state) {
   const Vector3<R> g = gravity<R>();
   R** a = arrays.array;
   const bool alternating =
-      alternate && n * 6 * sizeof(R) <= ParticleSystem<R>::alternation_limit_bytes;
+      walk == Walk::always_alternating ||
+      (walk == Walk::like_the_system &&
+       n * 6 * sizeof(R) <= ParticleSystem<R>::alternation_limit_bytes);
   const std::vector<R> start_x(a[3], a[3] + n), start_y(a[4], a[4] + n),
       start_z(a[5], a[5] + n);  // the velocities, to put back
   std::int64_t steps = 0;
@@ -203,11 +209,15 @@ void hand_loop(benchmark::State& state) {
 
 template <class R>
 void BM_HandStaggered(benchmark::State& state) {
-  hand_loop<R, false>(state);
+  hand_loop<R, Walk::forwards>(state);
 }
 template <class R>
 void BM_HandAlternating(benchmark::State& state) {
-  hand_loop<R, true>(state);
+  hand_loop<R, Walk::like_the_system>(state);
+}
+template <class R>
+void BM_HandAlwaysAlternating(benchmark::State& state) {
+  hand_loop<R, Walk::always_alternating>(state);
 }
 
 // Read-modify-write of the same six arrays: the memory bound of a step.
@@ -295,6 +305,10 @@ using WithDamping =
 void sizes(benchmark::internal::Benchmark* b) { b->Arg(1000)->Arg(100000)->Arg(10000000); }
 void middle(benchmark::internal::Benchmark* b) { b->Arg(100000); }
 void large(benchmark::internal::Benchmark* b) { b->Arg(10000000); }
+// Sizes across the alternation limit (8 MiB = 174,762 double particles).
+void around_limit(benchmark::internal::Benchmark* b) {
+  b->Arg(100000)->Arg(300000)->Arg(1000000)->Arg(3000000);
+}
 
 #define POINTMASS_BENCH_BOTH(function, args)                              \
   BENCHMARK_TEMPLATE(function, float)->Apply(args);                       \
@@ -302,6 +316,9 @@ void large(benchmark::internal::Benchmark* b) { b->Arg(10000000); }
 
 POINTMASS_BENCH_BOTH(BM_HandStaggered, sizes);
 POINTMASS_BENCH_BOTH(BM_HandAlternating, sizes);
+// Why the limit: forwards against alternating at every size, double.
+BENCHMARK_TEMPLATE(BM_HandStaggered, double)->Arg(300000)->Arg(1000000)->Arg(3000000);
+BENCHMARK_TEMPLATE(BM_HandAlwaysAlternating, double)->Apply(around_limit);
 POINTMASS_BENCH_BOTH(BM_Bandwidth, sizes);
 BENCHMARK_TEMPLATE(BM_System, Sparks<float>)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_System, Sparks<double>)->Apply(sizes);

@@ -56,6 +56,12 @@ for real in ("float", "double"):
     print(f"| system / scalar Particles, 100,000 | {r('BM_System<Sparks<%s>>', 'BM_Particles<%s>', '100000'):.1f} | >= 15 |")
     print(f"| parallel system / parallel bandwidth, 10,000,000 | {r('BM_SystemParallel<Sparks<%s>>', 'BM_BandwidthParallel<%s>', '10000000'):.2f} | >= 0.9 |")
     print()
+print("### Why the walk alternates only up to 8 MiB (double, hand-written loop)\n")
+print("| particles | arrays (MiB) | alternating / forwards |\n|---|---|---|")
+for n in ("100000", "300000", "1000000", "3000000"):
+    ratio = rate[f"BM_HandAlwaysAlternating<double>/{n}"] / rate[f"BM_HandStaggered<double>/{n}"]
+    print(f"| {int(n):,} | {int(n) * 48 / 2**20:.1f} | {ratio:.2f} |")
+print()
 print("### What each choice costs (float, 100,000 particles)\n")
 print("| configuration | M particle-steps/s | / default |\n|---|---|---|")
 base = rate["BM_System<Sparks<float>>/100000"]

@@ -705,10 +705,9 @@ class ParticleSystem {
   /// backwards in turn: each step then starts on the particles the step before finished
   /// with, still in the processor's caches, instead of on those evicted longest ago. The
   /// results are the same either way (every particle's step is independent of the others).
-  /// Measured on a 1 MiB-L2 core: 1.1-1.35x faster from 1,000 to 100,000 double particles;
-  /// past about 10 MiB the caches hold too small a share to repay the backward walk's weaker
-  /// hardware prefetch (2-5% slower), so larger systems always walk forwards. See
-  /// docs/performance.md.
+  /// Beyond a few times the size of a core's L2 cache, the cached share is too small to
+  /// repay the backward walk's weaker hardware prefetch, so larger systems always walk
+  /// forwards. docs/performance.md has the measurements on both sides of the limit.
   static constexpr std::size_t alternation_limit_bytes = std::size_t{8} << 20;
   /// The backward walk's chunk, a multiple of vector_block.
   static constexpr std::size_t backward_chunk = 256;
