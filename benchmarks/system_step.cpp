@@ -20,6 +20,7 @@
 #include <execution>
 #include <new>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -62,15 +63,19 @@ System make_system(std::size_t count) {
   return system;
 }
 
-// A small system is stepped millions of times: damping alone (x and z, which gravity does
-// not feed) would take its velocities into float's subnormal range, where arithmetic is many
-// times slower and the loop would measure that instead. So every `refresh_interval` steps,
-// outside the timing, the velocities are put back to where they started.
-constexpr std::int64_t refresh_interval = 4096;
+// A system is stepped thousands to millions of times: damping alone (x and z, which gravity
+// does not feed) would take its velocities into float's subnormal range, where arithmetic is
+// many times slower and the loop would measure that instead. So every `refresh_interval`
+// steps, outside the timing, the velocities are put back to where they started. Per-second
+// damping 0.9 keeps 0.9^(4096/60) = 7.6e-4 of a velocity over 4,096 steps of 1/60 s;
+// per-frame damping 0.9 keeps 0.9 a step (a float velocity of 10 is subnormal after about
+// 850 steps), so it is refreshed every 256 steps (0.9^256 = 2e-12).
+template <class D>
+constexpr std::int64_t refresh_interval = std::is_same_v<D, damping::PerFrame> ? 256 : 4096;
 
-template <class Restore>
+template <class D = damping::PerSecond, class Restore>
 void refresh_now_and_then(benchmark::State& state, std::int64_t& steps, Restore&& restore) {
-  if (++steps % refresh_interval != 0) return;
+  if (++steps % refresh_interval<D> != 0) return;
   state.PauseTiming();
   restore();
   state.ResumeTiming();
@@ -100,7 +105,8 @@ void BM_System(benchmark::State& state) {
   for (auto _ : state) {
     system.step(t);
     benchmark::ClobberMemory();
-    refresh_now_and_then(state, steps, [&] { start.restore(system); });
+    refresh_now_and_then<typename System::damping_policy>(state, steps,
+                                                          [&] { start.restore(system); });
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
@@ -114,7 +120,8 @@ void BM_SystemParallel(benchmark::State& state) {
   for (auto _ : state) {
     pointmass::step(std::execution::par_unseq, system, t);
     benchmark::ClobberMemory();
-    refresh_now_and_then(state, steps, [&] { start.restore(system); });
+    refresh_now_and_then<typename System::damping_policy>(state, steps,
+                                                          [&] { start.restore(system); });
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
