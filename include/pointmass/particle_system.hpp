@@ -609,41 +609,43 @@ class ParticleSystem {
     // values in registers instead of reloading them for every vector of particles.
     const Arrays arrays = arrays_in;
     const StepParameters parameters = parameters_in;
-    const std::size_t count = end - begin;
-    // A trip count that is a known multiple of every vector width lets g++'s -O2 cost
-    // model vectorise without a remainder loop; the remainder runs below.
-    const std::size_t blocked = count & ~(vector_block - 1);
-    step_vectorised(arrays, begin, blocked, parameters);
-    for (std::size_t k = blocked; k < count; ++k) step_particle(arrays, begin + k, parameters);
+    step_segment(arrays, begin, end - begin, parameters);
   }
 
   /// Steps particles [begin, end) as step_range does, with the same results, but walks them
   /// from the end: the part past the last whole chunk of backward_chunk first, then whole
-  /// chunks from the last to the first, each chunk forwards in one vectorised loop.
+  /// chunks from the last to the first, each chunk forwards through the same vectorised
+  /// loop (a single copy of it in this function: clang 14 lost the loop's no-alias mark on
+  /// a second inlined copy and left that copy scalar).
   static void step_range_backward(const Arrays& arrays_in, std::size_t begin, std::size_t end,
                                   const StepParameters& parameters_in) noexcept {
     const Arrays arrays = arrays_in;  // local copies, as in step_range
     const StepParameters parameters = parameters_in;
-    std::size_t chunk_end = end - (end - begin) % backward_chunk;
-    step_range(arrays, chunk_end, end, parameters);
-    while (chunk_end != begin) {
-      chunk_end -= backward_chunk;
-      step_vectorised(arrays, chunk_end, backward_chunk, parameters);
+    std::size_t first = end - (end - begin) % backward_chunk;
+    std::size_t count = end - first;
+    for (;;) {
+      step_segment(arrays, first, count, parameters);
+      if (first == begin) break;
+      first -= backward_chunk;
+      count = backward_chunk;
     }
   }
 
  private:
-  // Particles [first, first + count), count a multiple of vector_block: the loop marked for
-  // vectorisation (when the configuration can vectorise).
-  POINTMASS_DETAIL_INLINE static void step_vectorised(const Arrays& arrays, std::size_t first,
-                                                      std::size_t count,
-                                                      const StepParameters& parameters) noexcept {
+  // Particles [first, first + count): the loop marked for vectorisation (when the
+  // configuration can vectorise) over a trip count that is a multiple of vector_block, which
+  // lets g++'s -O2 cost model vectorise it without a remainder loop; then the remainder.
+  POINTMASS_DETAIL_INLINE static void step_segment(const Arrays& arrays, std::size_t first,
+                                                   std::size_t count,
+                                                   const StepParameters& parameters) noexcept {
+    const std::size_t blocked = count & ~(vector_block - 1);
     if constexpr (vectorisable) {
       POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
-      for (std::size_t k = 0; k < count; ++k) step_particle(arrays, first + k, parameters);
+      for (std::size_t k = 0; k < blocked; ++k) step_particle(arrays, first + k, parameters);
     } else {  // a power function per particle: no vector loop to ask for
-      for (std::size_t k = 0; k < count; ++k) step_particle(arrays, first + k, parameters);
+      for (std::size_t k = 0; k < blocked; ++k) step_particle(arrays, first + k, parameters);
     }
+    for (std::size_t k = blocked; k < count; ++k) step_particle(arrays, first + k, parameters);
   }
 
  public:
