@@ -179,8 +179,8 @@ void hand_step_backward(R* const* a, std::size_t n, R ax, R ay, R az, R t, R kep
 }
 
 // How the hand-written loop walks its arrays from one step to the next: always forwards;
-// forwards and backwards in turn as the system does (up to its size limit); or in turn at
-// every size (what the limit avoids).
+// forwards and backwards in turn as the system does (within its size bounds); or in turn at
+// every size (what the bounds avoid).
 enum class Walk { forwards, like_the_system, always_alternating };
 
 template <class R, Walk walk>
@@ -192,8 +192,7 @@ void hand_loop(benchmark::State& state) {
   R** a = arrays.array;
   const bool alternating =
       walk == Walk::always_alternating ||
-      (walk == Walk::like_the_system &&
-       n * 6 * sizeof(R) <= ParticleSystem<R>::alternation_limit_bytes);
+      (walk == Walk::like_the_system && ParticleSystem<R>::alternates(n));
   const std::vector<R> start_x(a[3], a[3] + n), start_y(a[4], a[4] + n),
       start_z(a[5], a[5] + n);  // the velocities, to put back
   std::int64_t steps = 0;
@@ -314,7 +313,7 @@ void middle(benchmark::internal::Benchmark* b) { b->Arg(100000); }
 void large(benchmark::internal::Benchmark* b) { b->Arg(10000000); }
 // Sizes across the alternation limit (8 MiB = 174,762 double particles).
 void around_limit(benchmark::internal::Benchmark* b) {
-  b->Arg(100000)->Arg(300000)->Arg(1000000)->Arg(3000000);
+  b->Arg(1000)->Arg(100000)->Arg(300000)->Arg(1000000)->Arg(3000000);
 }
 
 #define POINTMASS_BENCH_BOTH(function, args)                              \
@@ -326,6 +325,8 @@ POINTMASS_BENCH_BOTH(BM_HandAlternating, sizes);
 // Why the limit: forwards against alternating at every size, double.
 BENCHMARK_TEMPLATE(BM_HandStaggered, double)->Arg(300000)->Arg(1000000)->Arg(3000000);
 BENCHMARK_TEMPLATE(BM_HandAlwaysAlternating, double)->Apply(around_limit);
+// And why not below 32 KiB: float, 1,000 particles (23 KiB).
+BENCHMARK_TEMPLATE(BM_HandAlwaysAlternating, float)->Arg(1000);
 POINTMASS_BENCH_BOTH(BM_Bandwidth, sizes);
 BENCHMARK_TEMPLATE(BM_System, Sparks<float>)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_System, Sparks<double>)->Apply(sizes);

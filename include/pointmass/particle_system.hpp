@@ -56,9 +56,10 @@
 // `vectorize(assume_safety)`), so g++ and clang vectorise it at plain -O2 as well as at -O3;
 // -march=native (or -mavx2 -mfma) widens the vectors. See docs/performance.md.
 //
-// Traversal: while the arrays take at most `alternation_limit_bytes` (8 MiB), successive
-// steps walk the particles forwards and backwards in turn, so each step begins on the data
-// the previous one left in cache. Same results either way; see docs/performance.md.
+// Traversal: while the arrays take more than `alternation_floor_bytes` (32 KiB) and at most
+// `alternation_limit_bytes` (8 MiB), successive steps walk the particles forwards and
+// backwards in turn, so each step begins on the data the previous one left in cache. Same
+// results either way; see docs/performance.md.
 //
 // Parallel: define POINTMASS_ENABLE_PARALLEL before including this header to get
 // `pointmass::step(policy, system, t)` for the standard execution policies
@@ -696,12 +697,19 @@ class ParticleSystem {
     } else {
       step_range(arrays_, 0, size_, parameters);
     }
-    backward_ = !backward_ && size_ * storage_bytes_per_particle <= alternation_limit_bytes;
+    backward_ = !backward_ && alternates(size_);
     finish_step();
   }
 
   /// True when the next `step` walks the particles backwards (see alternation_limit_bytes).
   bool next_step_backward() const noexcept { return backward_; }
+
+  /// True when `step` alternates its walk for a system of `count` particles: when their
+  /// arrays take more than alternation_floor_bytes and at most alternation_limit_bytes.
+  static constexpr bool alternates(std::size_t count) noexcept {
+    const std::size_t bytes = count * storage_bytes_per_particle;
+    return bytes > alternation_floor_bytes && bytes <= alternation_limit_bytes;
+  }
 
   /// While the arrays take at most this many bytes, `step` walks the particles forwards and
   /// backwards in turn: each step then starts on the particles the step before finished
@@ -711,6 +719,10 @@ class ParticleSystem {
   /// repay the backward walk's weaker hardware prefetch, so larger systems always walk
   /// forwards. docs/performance.md has the measurements on both sides of the limit.
   static constexpr std::size_t alternation_limit_bytes = std::size_t{8} << 20;
+  /// Arrays that fit in a 32 KiB L1 data cache stay there whichever way a step walks, so
+  /// systems this small (1,365 float or 682 double particles with six arrays) always walk
+  /// forwards, the cheaper loop.
+  static constexpr std::size_t alternation_floor_bytes = std::size_t{32} << 10;
   /// The backward walk's chunk, a multiple of vector_block.
   static constexpr std::size_t backward_chunk = 256;
 
@@ -885,7 +897,7 @@ class ParticleSystem {
   Arrays arrays_{};
   std::size_t size_ = 0;
   std::size_t capacity_ = 0;
-  bool backward_ = false;  // the next step walks backwards (see alternation_limit_bytes)
+  bool backward_ = false;  // the next step walks backwards (see alternates)
   [[no_unique_address]] damping_state damping_{};
   Vector3<R> acceleration_{};
 };

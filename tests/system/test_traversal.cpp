@@ -1,9 +1,10 @@
-// The step's traversal. While the arrays take at most alternation_limit_bytes, successive
-// steps walk the particles forwards and backwards in turn (backwards: the part past the last
-// whole chunk first, then whole chunks of backward_chunk from the last to the first); above
-// the limit every step walks forwards. Either way every particle takes exactly its own step
-// once: the system matches the equivalent Particles bit for bit after every step, for sizes
-// around the vector block and the chunk, and on both sides of the limit.
+// The step's traversal. While the arrays take more than alternation_floor_bytes and at most
+// alternation_limit_bytes, successive steps walk the particles forwards and backwards in
+// turn (backwards: the part past the last whole chunk first, then whole chunks of
+// backward_chunk from the last to the first); otherwise every step walks forwards. Either
+// way every particle takes exactly its own step once: the system matches the equivalent
+// Particles bit for bit after every step, for sizes around the vector block and the chunk
+// (step_range_backward directly), and on both sides of both bounds (step).
 #include <doctest/doctest.h>
 
 #include <cstddef>
@@ -20,10 +21,13 @@ using namespace pointmass;
 using pointmass::test::matches;
 using pointmass::test::random_vector;
 
-// Steps a system of `count` particles and the equivalent Particles `steps` times; checks
-// after each step that they match and that the walk's direction alternates (or not).
+enum class Walk { by_step_alternating, by_step_forwards, backward_only };
+
+// Steps a system of `count` particles and the equivalent Particles `steps` times, by `step`
+// or by step_range_backward alone; checks after each step that they match and, with `step`,
+// that the walk's direction alternates (or not).
 template <class R, class D, class P, class... Features>
-void step_side_by_side(std::size_t count, int steps, bool alternates) {
+void step_side_by_side(std::size_t count, int steps, Walk walk) {
   using System = ParticleSystem<R, D, P, Features...>;
   CAPTURE(count);
   std::mt19937 engine(static_cast<unsigned>(count));
@@ -55,9 +59,15 @@ void step_side_by_side(std::size_t count, int steps, bool alternates) {
   REQUIRE(matches(system, particles));
   for (int step = 0; step < steps; ++step) {
     CAPTURE(step);
-    CHECK(system.next_step_backward() == (alternates && step % 2 == 1));
     const R t = R(1) / R(60 + step);
-    system.step(t);
+    if (walk == Walk::backward_only) {
+      System::step_range_backward(system.arrays(), 0, system.size(),
+                                  system.step_parameters(t));
+      system.finish_step();
+    } else {
+      CHECK(system.next_step_backward() == (walk == Walk::by_step_alternating && step % 2 == 1));
+      system.step(t);
+    }
     for (auto& particle : particles) particle.integrate(t);
     REQUIRE(matches(system, particles));
   }
@@ -65,32 +75,48 @@ void step_side_by_side(std::size_t count, int steps, bool alternates) {
 
 }  // namespace
 
-TEST_CASE_TEMPLATE("alternating walk: every particle takes its own step, once", R, float,
-                   double) {
+TEST_CASE_TEMPLATE("backward walk: every particle takes its own step, once", R, float, double) {
   using System = ParticleSystem<R>;
   static_assert(System::backward_chunk % System::vector_block == 0);
   constexpr std::size_t chunk = System::backward_chunk;
   for (const std::size_t count :
        {std::size_t{1}, std::size_t{15}, std::size_t{16}, chunk - 1, chunk, chunk + 1,
         3 * chunk + 17, std::size_t{1000}}) {
-    step_side_by_side<R, damping::PerSecond, position::Euler>(count, 5, true);
+    step_side_by_side<R, damping::PerSecond, position::Euler>(count, 3, Walk::backward_only);
   }
 }
 
 TEST_CASE_TEMPLATE("alternating walk with per-particle values, forces and lifetimes", R, float,
                    double) {
+  using Featured = ParticleSystem<R, damping::Exact, position::Exact,
+                                  features::PerParticleDamping,
+                                  features::PerParticleAcceleration, features::Forces,
+                                  features::Lifetime>;
+  constexpr std::size_t count = 2 * Featured::alternation_floor_bytes /
+                                    Featured::storage_bytes_per_particle +
+                                Featured::backward_chunk / 2;
+  REQUIRE(Featured::alternates(count));
   step_side_by_side<R, damping::Exact, position::Exact, features::PerParticleDamping,
                     features::PerParticleAcceleration, features::Forces, features::Lifetime>(
-      700, 4, true);
+      count, 4, Walk::by_step_alternating);
   step_side_by_side<R, damping::PerFrame, position::SemiImplicit,
-                    features::PerParticleAcceleration>(531, 4, true);
+                    features::PerParticleAcceleration>(531, 3, Walk::backward_only);
 }
 
-TEST_CASE_TEMPLATE("the walk alternates up to the size limit and walks forwards beyond it", R,
-                   float, double) {
+TEST_CASE_TEMPLATE("the walk alternates between its size bounds and walks forwards outside them",
+                   R, float, double) {
   using System = ParticleSystem<R>;
-  constexpr std::size_t largest =
-      System::alternation_limit_bytes / System::storage_bytes_per_particle;
-  step_side_by_side<R, damping::PerSecond, position::Euler>(largest, 3, true);
-  step_side_by_side<R, damping::PerSecond, position::Euler>(largest + 1, 3, false);
+  constexpr std::size_t bytes = System::storage_bytes_per_particle;
+  constexpr std::size_t smallest = System::alternation_floor_bytes / bytes + 1;
+  constexpr std::size_t largest = System::alternation_limit_bytes / bytes;
+  CHECK_FALSE(System::alternates(smallest - 1));
+  CHECK(System::alternates(smallest));
+  CHECK(System::alternates(largest));
+  CHECK_FALSE(System::alternates(largest + 1));
+  using PerSecondEuler = void (*)(std::size_t, int, Walk);
+  const PerSecondEuler check = step_side_by_side<R, damping::PerSecond, position::Euler>;
+  check(smallest - 1, 3, Walk::by_step_forwards);
+  check(smallest, 3, Walk::by_step_alternating);
+  check(largest, 3, Walk::by_step_alternating);
+  check(largest + 1, 3, Walk::by_step_forwards);
 }
