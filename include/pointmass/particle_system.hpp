@@ -692,11 +692,7 @@ class ParticleSystem {
   void step(R duration) {
     if (!begin_step(duration)) return;
     const StepParameters parameters = step_parameters(duration);
-    if (backward_) {
-      step_range_backward(arrays_, 0, size_, parameters);
-    } else {
-      step_range(arrays_, 0, size_, parameters);
-    }
+    (backward_ ? step_range_backward : step_range)(arrays_, 0, size_, parameters);
     backward_ = !backward_ && alternates(size_);
     finish_step();
   }
