@@ -7,7 +7,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 ensure_packages cmake ninja-build g++ libbenchmark-dev libtbb-dev python3
-repetitions=${1:-5}
+repetitions=${1:-15}
 build="$POINTMASS_ROOT/build/benchmark-system"
 cmake -S "$POINTMASS_ROOT" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_CXX_FLAGS="-march=native" >/dev/null
