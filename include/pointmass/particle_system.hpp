@@ -220,6 +220,7 @@ class ParticleSystem {
         arrays_(std::exchange(other.arrays_, Arrays{})),
         size_(std::exchange(other.size_, 0)),
         capacity_(std::exchange(other.capacity_, 0)),
+        backward_(std::exchange(other.backward_, false)),
         damping_(other.damping_),
         acceleration_(other.acceleration_) {}
   ParticleSystem& operator=(ParticleSystem other) noexcept {
@@ -233,6 +234,7 @@ class ParticleSystem {
     std::swap(arrays_, other.arrays_);
     std::swap(size_, other.size_);
     std::swap(capacity_, other.capacity_);
+    std::swap(backward_, other.backward_);
     std::swap(damping_, other.damping_);
     std::swap(acceleration_, other.acceleration_);
   }
@@ -697,7 +699,8 @@ class ParticleSystem {
     finish_step();
   }
 
-  /// True when the next `step` walks the particles backwards (see alternation_limit_bytes).
+  /// True when the next `step` walks the particles backwards (see alternates). A copy
+  /// starts forwards; a move or swap takes the direction along.
   bool next_step_backward() const noexcept { return backward_; }
 
   /// True when `step` alternates its walk for a system of `count` particles: when their

@@ -120,3 +120,30 @@ TEST_CASE_TEMPLATE("the walk alternates between its size bounds and walks forwar
   check(largest, 3, Walk::by_step_alternating);
   check(largest + 1, 3, Walk::by_step_forwards);
 }
+
+TEST_CASE_TEMPLATE("a copy starts forwards; a move or swap takes the direction along", R, float,
+                   double) {
+  using System = ParticleSystem<R>;
+  constexpr std::size_t count =
+      2 * System::alternation_floor_bytes / System::storage_bytes_per_particle;
+  REQUIRE(System::alternates(count));
+  System system(count);
+  std::mt19937 engine(3);
+  for (std::size_t i = 0; i < count; ++i) {
+    system.spawn(random_vector(engine, R(10)), random_vector(engine, R(1)));
+  }
+  system.step(R(1) / R(60));
+  REQUIRE(system.next_step_backward());
+
+  const System copy(system);
+  CHECK_FALSE(copy.next_step_backward());
+
+  System other;
+  other.swap(system);
+  CHECK(other.next_step_backward());
+  CHECK_FALSE(system.next_step_backward());
+
+  const System moved(std::move(other));
+  CHECK(moved.next_step_backward());
+  CHECK_FALSE(other.next_step_backward());  // NOLINT(bugprone-use-after-move): reset by the move
+}
