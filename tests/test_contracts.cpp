@@ -111,7 +111,7 @@ void recording_handler(const ContractViolation& violation) {
 }
 }  // namespace
 
-TEST_CASE("a user's handler replaces the default; a rejected call still changes nothing") {
+TEST_CASE("a user's handler replaces the default, a rejected call still changes nothing") {
   const ContractHandler previous = set_contract_handler(&recording_handler);
   CHECK((previous == &default_contract_handler));
   Particle<float> p;

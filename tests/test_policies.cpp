@@ -179,7 +179,7 @@ TEST_CASE_TEMPLATE("constant-acceleration flight matches p0 + v0 t + a t^2 / 2",
   CHECK(close(euler.position().y, expected.y + lag, ulps, R(160)));
 }
 
-TEST_CASE_TEMPLATE("per-second damping is frame-rate independent; per-frame is not", R, float,
+TEST_CASE_TEMPLATE("per-second damping is frame-rate independent, per-frame is not", R, float,
                    double) {
   const R t = R(0.05);
   const R d = R(0.9);

@@ -108,7 +108,7 @@ TEST_CASE("the error bound is not vacuous: the seed's defaults use at least a fi
   }
 }
 
-TEST_CASE("per-frame damping calibrated per second is the per-second model; fixed per frame it is not") {
+TEST_CASE("per-frame damping calibrated per second is the per-second model, fixed per frame it is not") {
   // d per frame kept fixed: the drag rate ln(d)/h is 8 times stronger at 240 fps than at
   // 30 fps, so the 5 s positions differ by far more than either method's error.
   Scene s = ballistic_scenes()[0];

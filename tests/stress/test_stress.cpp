@@ -73,7 +73,7 @@ TEST_CASE_TEMPLATE("huge accelerations (1e6 m/s^2): finite, and exact where the 
   }
 }
 
-TEST_CASE_TEMPLATE("damping 1 is no damping, bit for bit; damping 0 keeps only this step's push", R,
+TEST_CASE_TEMPLATE("damping 1 is no damping, bit for bit, damping 0 keeps only this step's push", R,
                    float, double) {
   Scene s = ballistic_scenes()[1];  // artillery
   const auto compare_with_none = [&]<class D, class P>() {
@@ -105,7 +105,7 @@ TEST_CASE_TEMPLATE("damping 1 is no damping, bit for bit; damping 0 keeps only t
   for_each_combination(compare_with_none);
 }
 
-TEST_CASE_TEMPLATE("tiny and huge masses under a force; infinite mass never moves", R, float, double) {
+TEST_CASE_TEMPLATE("tiny and huge masses under a force, infinite mass never moves", R, float, double) {
   for (const R mass : {R(1e-6), R(1e9)}) {
     Particle<R, damping::None, position::Kinematic> p;  // exact for a constant force
     p.set_mass(mass);

@@ -241,7 +241,7 @@ TEST_CASE_TEMPLATE("lifetime in a large system: exactly the expired particles go
   }
 }
 
-TEST_CASE_TEMPLATE("capacity is reserved up front; a step allocates nothing; growth keeps data",
+TEST_CASE_TEMPLATE("capacity is reserved up front, a step allocates nothing, growth keeps data",
                    R, float, double) {
   ParticleSystem<R> system(64);
   std::mt19937 engine(1);

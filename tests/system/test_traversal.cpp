@@ -121,7 +121,7 @@ TEST_CASE_TEMPLATE("the walk alternates between its size bounds and walks forwar
   check(largest + 1, 3, Walk::by_step_forwards);
 }
 
-TEST_CASE_TEMPLATE("a copy starts forwards; a move or swap takes the direction along", R, float,
+TEST_CASE_TEMPLATE("a copy starts forwards, a move or swap takes the direction along", R, float,
                    double) {
   using System = ParticleSystem<R>;
   constexpr std::size_t count =
