@@ -163,8 +163,8 @@ void hand_step(R* __restrict px, R* __restrict py, R* __restrict pz, R* __restri
   }
 }
 
-// The traversal ParticleSystem::step uses below its alternation limit, by hand: every other
-// step walks the arrays backwards in whole chunks, each chunk forwards.
+// The traversal ParticleSystem::step uses within its alternation bounds, by hand: every
+// other step walks the arrays backwards in whole chunks, each chunk forwards.
 template <class R>
 void hand_step_backward(R* const* a, std::size_t n, R ax, R ay, R az, R t, R kept) {
   constexpr std::size_t chunk = ParticleSystem<R>::backward_chunk;
@@ -311,7 +311,7 @@ using WithDamping =
 void sizes(benchmark::internal::Benchmark* b) { b->Arg(1000)->Arg(100000)->Arg(10000000); }
 void middle(benchmark::internal::Benchmark* b) { b->Arg(100000); }
 void large(benchmark::internal::Benchmark* b) { b->Arg(10000000); }
-// Sizes across the alternation limit (8 MiB = 174,762 double particles).
+// Double sizes across both alternation bounds (32 KiB = 682 particles, 8 MiB = 174,762).
 void around_limit(benchmark::internal::Benchmark* b) {
   b->Arg(1000)->Arg(100000)->Arg(300000)->Arg(1000000)->Arg(3000000);
 }
@@ -322,7 +322,7 @@ void around_limit(benchmark::internal::Benchmark* b) {
 
 POINTMASS_BENCH_BOTH(BM_HandStaggered, sizes);
 POINTMASS_BENCH_BOTH(BM_HandAlternating, sizes);
-// Why the limit: forwards against alternating at every size, double.
+// Why the bounds: forwards against alternating at every size, double.
 BENCHMARK_TEMPLATE(BM_HandStaggered, double)->Arg(300000)->Arg(1000000)->Arg(3000000);
 BENCHMARK_TEMPLATE(BM_HandAlwaysAlternating, double)->Apply(around_limit);
 // And why not below 32 KiB: float, 1,000 particles (23 KiB).
