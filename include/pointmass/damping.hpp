@@ -100,6 +100,10 @@ struct Retention {
 /// No damping: v1 = v0 + a t. Stores nothing and calls no power function.
 /// Exact for constant acceleration; the cheapest update, for very large particle counts.
 struct None {
+  /// Global order of accuracy against the continuous model; exact for constant acceleration.
+  static constexpr int order = 1;
+  /// True when v1 is the continuous model's exact velocity under constant acceleration.
+  static constexpr bool exact_for_constant_acceleration = true;
   template <Real R>
   struct State {
     POINTMASS_HD static constexpr R value() noexcept { return R(1); }
@@ -123,6 +127,10 @@ struct None {
 /// rate (continuous model: rate ln(d) / t). First order. No power function: meant for
 /// thousands of sparks at a fixed frame rate.
 struct PerFrame {
+  /// Global order of accuracy against the continuous model; the model itself changes with the frame rate.
+  static constexpr int order = 1;
+  /// True when v1 is the continuous model's exact velocity under constant acceleration.
+  static constexpr bool exact_for_constant_acceleration = false;
   template <Real R>
   using State = StoredDamping<R>;
   template <Real R>
@@ -143,6 +151,10 @@ struct PerFrame {
 /// d is the fraction kept per second, so damping alone is frame-rate independent (one step
 /// of 2t equals two of t). First order in the acceleration term. One power function a step.
 struct PerSecond {
+  /// Global order of accuracy against the continuous model; exact without acceleration.
+  static constexpr int order = 1;
+  /// True when v1 is the continuous model's exact velocity under constant acceleration.
+  static constexpr bool exact_for_constant_acceleration = false;
   template <Real R>
   using State = StoredDamping<R>;
   template <Real R>
@@ -164,6 +176,10 @@ struct PerSecond {
 /// a t (d^t - 1). First order. One power function a step. Choose it to reproduce
 /// trajectories of code ported from the reference engine.
 struct AccelerateThenDamp {
+  /// Global order of accuracy against the continuous model; exact without acceleration.
+  static constexpr int order = 1;
+  /// True when v1 is the continuous model's exact velocity under constant acceleration.
+  static constexpr bool exact_for_constant_acceleration = false;
   template <Real R>
   using State = StoredDamping<R>;
   template <Real R>
@@ -188,6 +204,11 @@ struct AccelerateThenDamp {
 /// costs one expm1 a step (ln d is computed once, when the damping is set). Its factors also
 /// carry phi2, so position::Exact gives the exact position at no further cost.
 struct Exact {
+  /// Global order of accuracy against the continuous model; exact for constant acceleration
+  /// (the order applies when the acceleration varies over the step, as under a spring).
+  static constexpr int order = 1;
+  /// True when v1 is the continuous model's exact velocity under constant acceleration.
+  static constexpr bool exact_for_constant_acceleration = true;
   template <Real R>
   class State {
    public:
@@ -237,10 +258,13 @@ struct Exact {
 namespace pointmass {
 
 /// A damping policy: a State<R> made from a damping value, per-step factors, and a velocity
-/// update over vectors of R (checked for float and double).
+/// update over vectors of R (checked for float, double and long double), and its order and
+/// exactness stated as `order` and `exact_for_constant_acceleration`.
 template <class D>
 concept DampingPolicy = requires(const Vector3<float>& vf, float tf, const Vector3<double>& vd,
-                                 double td) {
+                                 double td, const Vector3<long double>& vl, long double tl) {
+  { D::order } -> std::convertible_to<int>;
+  { D::exact_for_constant_acceleration } -> std::convertible_to<bool>;
   typename D::template State<float>;
   typename D::template State<double>;
   { typename D::template State<float>{}.value() } -> std::same_as<float>;
@@ -251,6 +275,10 @@ concept DampingPolicy = requires(const Vector3<float>& vf, float tf, const Vecto
   {
     D::velocity(vd, vd, td, D::factors(typename D::template State<double>{}, td))
   } -> std::same_as<Vector3<double>>;
+  { typename D::template State<long double>{}.value() } -> std::same_as<long double>;
+  {
+    D::velocity(vl, vl, tl, D::factors(typename D::template State<long double>{}, tl))
+  } -> std::same_as<Vector3<long double>>;
 };
 
 /// The factors type a damping policy computes for one step in precision R.

@@ -37,6 +37,12 @@ namespace pointmass::position {
 /// The text's short form: p1 = p0 + v0 t, with the velocity from the start of the step.
 /// Local error a t^2 / 2; first order. The cheapest update.
 struct Euler {
+  /// Global order of accuracy against the continuous model.
+  static constexpr int order = 1;
+  /// True when, paired with damping policy D, a step is the exact flow for constant
+  /// acceleration (never: it drops a t^2 / 2).
+  template <class D>
+  static constexpr bool exact_for_constant_acceleration = false;
   template <class P, class V, class A, class T, class F>
   POINTMASS_HD static constexpr P position(const P& p0, const V& v0, const V&, const A&,
                                            const T& t, const F&) noexcept {
@@ -47,6 +53,12 @@ struct Euler {
 /// The full form: p1 = p0 + v0 t + a t^2 / 2. Exact for constant acceleration without
 /// damping; with damping the velocity update still limits the method to first order.
 struct Kinematic {
+  /// Global order of accuracy against the continuous model.
+  static constexpr int order = 1;
+  /// True when, paired with damping policy D, a step is the exact flow for constant
+  /// acceleration (without damping only).
+  template <class D>
+  static constexpr bool exact_for_constant_acceleration = std::is_same_v<D, damping::None>;
   template <class P, class V, class A, class T, class F>
   POINTMASS_HD static constexpr P position(const P& p0, const V& v0, const V&, const A& a,
                                            const T& t, const F&) noexcept {
@@ -59,6 +71,12 @@ struct Kinematic {
 /// step. First order, but symplectic: on an undamped spring of angular frequency w it keeps
 /// the energy bounded for w t < 2, where the explicit forms gain energy at any step.
 struct SemiImplicit {
+  /// Global order of accuracy against the continuous model.
+  static constexpr int order = 1;
+  /// True when, paired with damping policy D, a step is the exact flow for constant
+  /// acceleration (never: it uses v1 for the whole step).
+  template <class D>
+  static constexpr bool exact_for_constant_acceleration = false;
   template <class P, class V, class A, class T, class F>
   POINTMASS_HD static constexpr P position(const P& p0, const V&, const V& v1, const A&,
                                            const T& t, const F&) noexcept {
@@ -83,6 +101,12 @@ concept ExactFactors = std::is_empty_v<F> || requires(const F& f) {
 /// with phi1 and phi2 from damping::Exact's factors (computed once per step). Without damping
 /// (damping::None, k = 0: phi1 = 1, phi2 = 1/2) it is the Kinematic form.
 struct Exact {
+  /// Global order of accuracy against the continuous model.
+  static constexpr int order = 1;
+  /// True when, paired with damping policy D, a step is the exact flow for constant
+  /// acceleration (with an exact velocity update: damping::None or damping::Exact).
+  template <class D>
+  static constexpr bool exact_for_constant_acceleration = D::exact_for_constant_acceleration;
   template <class P, class V, class A, class T, class F>
     requires detail::ExactFactors<F>
   POINTMASS_HD static constexpr P position(const P& p0, const V& v0, const V&, const A& a,
@@ -98,6 +122,18 @@ struct Exact {
 }  // namespace pointmass::position
 
 namespace pointmass {
+
+/// True when the pair (D, P) steps exactly along the continuous model for constant
+/// acceleration at any step length (its error is rounding only): (None, Kinematic),
+/// (None, Exact) and (Exact, Exact).
+template <class D, class P>
+inline constexpr bool is_exact_for_constant_acceleration_v =
+    D::exact_for_constant_acceleration && P::template exact_for_constant_acceleration<D>;
+
+/// The pair's global order of accuracy against the continuous model when the acceleration
+/// varies over a step (a spring): the lower of the two policies' orders.
+template <class D, class P>
+inline constexpr int order_v = D::order < P::order ? D::order : P::order;
 
 /// A position policy usable with damping policy D (checked for float and double).
 template <class P, class D>

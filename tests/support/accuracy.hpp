@@ -146,11 +146,11 @@ bool is_exact_for(const Scene& s) {
   if (s.has_spring()) return false;  // the force is frozen over each step
   const bool no_damping = damping_rate<D>(s) == 0.0;
   const bool no_acceleration = s.gravity == Vector3<double>{};
-  const bool velocity_exact = std::is_same_v<D, damping::Exact> || no_damping || no_acceleration;
-  if (!velocity_exact) return false;
-  if constexpr (std::is_same_v<P, position::Exact>) return true;
-  else if constexpr (std::is_same_v<P, position::Kinematic>) return no_damping;
-  else return no_damping && no_acceleration;
+  // The policies' own traits: the pair is exact for any constant acceleration and damping,
+  // or it meets a scene without the part it approximates.
+  if constexpr (is_exact_for_constant_acceleration_v<D, P>) return true;
+  if (no_damping && is_exact_for_constant_acceleration_v<damping::None, P>) return true;
+  return no_damping && no_acceleration;  // uniform motion: every pair is exact
 }
 
 // --- simulation ----------------------------------------------------------------------------
