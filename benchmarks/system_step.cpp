@@ -4,8 +4,7 @@
 // loop over as many bytes, and a loop of scalar Particles (one object per particle).
 // scripts/benchmark-system.sh runs it and turns the medians into docs/performance.md's table.
 // Counters: items_per_second = particle-steps per second.
-#define POINTMASS_ENABLE_PARALLEL 1
-#include <pointmass/particle_system.hpp>
+#include <pointmass/parallel.hpp>
 
 #include <pointmass/gravity.hpp>
 
@@ -300,7 +299,7 @@ using PerFrame = ParticleSystem<R, damping::PerFrame>;
 template <class R>
 using WithLifetime = ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime>;
 template <class R>
-using WithForces = ParticleSystem<R, damping::PerSecond, position::Euler, features::Forces>;
+using WithForces = ParticleSystem<R, damping::PerSecond, position::Euler, features::ForceAccumulator>;
 template <class R>
 using WithAcceleration =
     ParticleSystem<R, damping::PerSecond, position::Euler, features::PerParticleAcceleration>;

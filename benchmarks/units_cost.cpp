@@ -19,7 +19,7 @@
 #include <vector>
 
 #include <pointmass/particle.hpp>
-#include <pointmass/scenes.hpp>
+#include <pointmass/extras/scenes.hpp>
 #include <pointmass/units.hpp>
 
 #include "units_scene.hpp"

@@ -11,6 +11,7 @@
 // (eq. 3.6 and p + v t) to compare.
 //
 //   ballistics [--dt SECONDS] [--seed] [--csv FILE]
+#include <pointmass/extras/scenes.hpp>
 #include <pointmass/pointmass.hpp>
 
 #include <cstdio>

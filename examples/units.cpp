@@ -9,7 +9,7 @@
 
 #include <boost/units/io.hpp>
 
-#include <pointmass/scenes.hpp>
+#include <pointmass/extras/scenes.hpp>
 #include <pointmass/units.hpp>
 
 namespace pm = pointmass;

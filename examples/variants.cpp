@@ -8,6 +8,7 @@
 //
 //   variants [--quick]   (--quick: a shorter timing run)
 #include <pointmass/particle_system.hpp>
+#include <pointmass/extras/scenes.hpp>
 #include <pointmass/pointmass.hpp>
 
 #include <algorithm>
@@ -101,10 +102,10 @@ int main(int argc, char** argv) {
   using P = position::Euler;
   system_row<ParticleSystem<float, D, P>>("");
   system_row<ParticleSystem<float, D, P, Lifetime>>(", Lifetime");
-  system_row<ParticleSystem<float, D, P, Forces>>(", Forces");
+  system_row<ParticleSystem<float, D, P, ForceAccumulator>>(", ForceAccumulator");
   system_row<ParticleSystem<float, D, P, PerParticleAcceleration>>(", PerParticleAcceleration");
   system_row<ParticleSystem<float, D, P, PerParticleDamping>>(", PerParticleDamping");
-  system_row<ParticleSystem<float, D, P, PerParticleDamping, PerParticleAcceleration, Forces,
+  system_row<ParticleSystem<float, D, P, PerParticleDamping, PerParticleAcceleration, ForceAccumulator,
                             Lifetime>>(", all four");
   return 0;
 }

@@ -70,7 +70,7 @@ print("| configuration | M particle-steps/s | / default |\n|---|---|---|")
 base = rate["BM_System<Sparks<float>>/100000"]
 for label, name in [("default: uniform per-second damping and gravity", "Sparks"),
                     ("damping::None", "Undamped"), ("damping::PerFrame", "PerFrame"),
-                    ("+ features::Lifetime", "WithLifetime"), ("+ features::Forces", "WithForces"),
+                    ("+ features::Lifetime", "WithLifetime"), ("+ features::ForceAccumulator", "WithForces"),
                     ("+ features::PerParticleAcceleration", "WithAcceleration"),
                     ("+ features::PerParticleDamping (powf per particle)", "WithDamping")]:
     v = rate[f"BM_System<{name}<float>>/100000"]

@@ -3,6 +3,7 @@
 
 #include <limits>
 
+#include <pointmass/extras/scenes.hpp>
 #include <pointmass/pointmass.hpp>
 
 #include "tolerance.hpp"

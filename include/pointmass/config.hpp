@@ -51,6 +51,15 @@
 #define POINTMASS_CHECKS 0
 #endif
 
+// Whether this compilation pass checks hot-path preconditions: POINTMASS_CHECKS on the host;
+// never in device code (a GPU kernel has no contract handler to call). Decided here once;
+// call sites write `#if POINTMASS_HOST_CHECKS`.
+#if POINTMASS_CHECKS && !defined(__CUDA_ARCH__)
+#define POINTMASS_HOST_CHECKS 1
+#else
+#define POINTMASS_HOST_CHECKS 0
+#endif
+
 namespace pointmass {
 
 /// What a failed check reports: enough to write "integrate: duration = -0.1 must be >= 0".

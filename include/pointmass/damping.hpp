@@ -258,13 +258,12 @@ struct Exact {
 namespace pointmass {
 
 /// A damping policy: a State<R> made from a damping value, per-step factors, and a velocity
-/// update over vectors of R (checked for float, double and long double), and its order and
-/// exactness stated as `order` and `exact_for_constant_acceleration`.
+/// update over vectors of R (checked for float, double and long double). A policy states its
+/// order and exactness as `order` and `exact_for_constant_acceleration` (the library's all
+/// do); one that does not is taken as first order and not exact.
 template <class D>
 concept DampingPolicy = requires(const Vector3<float>& vf, float tf, const Vector3<double>& vd,
                                  double td, const Vector3<long double>& vl, long double tl) {
-  { D::order } -> std::convertible_to<int>;
-  { D::exact_for_constant_acceleration } -> std::convertible_to<bool>;
   typename D::template State<float>;
   typename D::template State<double>;
   { typename D::template State<float>{}.value() } -> std::same_as<float>;
@@ -280,6 +279,15 @@ concept DampingPolicy = requires(const Vector3<float>& vf, float tf, const Vecto
     D::velocity(vl, vl, tl, D::factors(typename D::template State<long double>{}, tl))
   } -> std::same_as<Vector3<long double>>;
 };
+
+namespace detail {
+/// A policy's stated `order`, or 1.
+template <class Policy>
+consteval int stated_order() {
+  if constexpr (requires { Policy::order; }) return Policy::order;
+  else return 1;
+}
+}  // namespace detail
 
 /// The factors type a damping policy computes for one step in precision R.
 template <class D, class R>

@@ -12,14 +12,16 @@
 //   v1 = D::velocity(v0, a, t, f)                            eq. 3.5, 3.6, listing form, none, exact
 //   p1 = P::position(p0, v0, v1, a, t, f)                    p + v0 t, + a t^2/2, p + v1 t, exact
 //   force_accumulator = 0
-// An infinite-mass particle (inverse mass 0) does not move: `integrate` only clears its
-// accumulator. A zero duration changes nothing (the accumulated force waits for the next
-// step). The acceleration is the user's (mainly gravity) and is never changed by a step.
+// A zero duration changes nothing (the accumulated force waits for the next step). An
+// infinite-mass particle (inverse mass 0) does not move: a step of t > 0 only clears its
+// accumulator. ParticleSystem follows the same rule, so the two agree bit for bit. The
+// acceleration is the user's (mainly gravity) and is never changed by a step.
 #pragma once
 
 #include <type_traits>
 
 #include "config.hpp"
+#include "detail/validate.hpp"
 #include "damping.hpp"
 #include "position.hpp"
 #include "quantities.hpp"
@@ -94,45 +96,33 @@ class BasicParticle {
   // --- setters: always validated; a rejected value leaves the particle unchanged ------------
 
   constexpr void set_position(const Vector3<length_type>& position) {
-    if (const auto p = raw(position); check_finite("set_position", "position", p)) position_ = p;
+    if (const auto p = raw(position); detail::check_finite("set_position", "position", p)) position_ = p;
   }
   constexpr void set_velocity(const Vector3<velocity_type>& velocity) {
-    if (const auto v = raw(velocity); check_finite("set_velocity", "velocity", v)) velocity_ = v;
+    if (const auto v = raw(velocity); detail::check_finite("set_velocity", "velocity", v)) velocity_ = v;
   }
   constexpr void set_acceleration(const Vector3<acceleration_type>& acceleration) {
-    if (const auto a = raw(acceleration); check_finite("set_acceleration", "acceleration", a)) {
+    if (const auto a = raw(acceleration); detail::check_finite("set_acceleration", "acceleration", a)) {
       acceleration_ = a;
     }
   }
-  /// mass > 0 (infinity makes the particle immovable); zero, negative, NaN, or a mass so
-  /// small that 1/mass overflows `real` is rejected.
+  /// mass > 0 (infinity makes the particle immovable); zero, negative, NaN, a mass so small
+  /// that 1/mass overflows `real`, or so large that 1/mass is subnormal, is rejected (so
+  /// mass() is finite whenever has_finite_mass() is true).
   constexpr void set_mass(const mass_type& mass) {
-    const real m = Q::raw(mass);
-    if (real_isnan(m) || !(m > real(0)) || !real_isfinite(real(1) / m)) {
-      detail::report_scalar("set_mass", "mass", "> 0, not NaN, with 1/mass finite", m);
-      return;
-    }
-    inverse_mass_ = real(1) / m;
+    if (const real m = Q::raw(mass); detail::check_mass("set_mass", m)) inverse_mass_ = real(1) / m;
   }
-  /// inverse mass >= 0 and finite; 0 makes the particle immovable. Zero mass (infinite
-  /// inverse mass) cannot be expressed.
+  /// inverse mass 0 (immovable) or finite, normal and > 0. Zero mass (infinite inverse
+  /// mass) cannot be expressed.
   constexpr void set_inverse_mass(const inverse_mass_type& inverse_mass) {
     const real im = Q::raw(inverse_mass);
-    if (!real_isfinite(im) || im < real(0)) {
-      detail::report_scalar("set_inverse_mass", "inverse_mass", ">= 0 and finite", im);
-      return;
-    }
-    inverse_mass_ = im;
+    if (detail::check_inverse_mass("set_inverse_mass", im)) inverse_mass_ = im;
   }
   /// 0 <= damping <= 1: the fraction of velocity kept per second (per frame for PerFrame).
   constexpr void set_damping(real damping)
     requires stores_damping
   {
-    if (real_isnan(damping) || damping < real(0) || damping > real(1)) {
-      detail::report_scalar("set_damping", "damping", "in [0, 1]", damping);
-      return;
-    }
-    damping_ = damping_state(damping);
+    if (detail::check_damping("set_damping", damping)) damping_ = damping_state(damping);
   }
 
   // --- forces and integration --------------------------------------------------------------
@@ -141,8 +131,8 @@ class BasicParticle {
   /// checked when POINTMASS_CHECKS is on (debug builds by default).
   POINTMASS_HD constexpr void add_force(const Vector3<force_type>& force) {
     const auto f = raw(force);
-#if POINTMASS_CHECKS && !defined(__CUDA_ARCH__)
-    if (!check_finite("add_force", "force", f)) return;
+#if POINTMASS_HOST_CHECKS
+    if (!detail::check_finite("add_force", "force", f)) return;
 #endif
     force_accumulator_ += f;
   }
@@ -153,17 +143,14 @@ class BasicParticle {
   /// nothing.
   POINTMASS_HD constexpr void integrate(const time_type& duration) {
     const real t = Q::raw(duration);
-#if POINTMASS_CHECKS && !defined(__CUDA_ARCH__)
-    if (!real_isfinite(t) || t < real(0)) {
-      detail::report_scalar("integrate", "duration", "finite and >= 0", t);
-      return;
-    }
+#if POINTMASS_HOST_CHECKS
+    if (!detail::check_duration("integrate", t)) return;
 #endif
+    if (t == real(0)) return;          // nothing changes, the accumulated force waits
     if (!(inverse_mass_ > real(0))) {  // immovable: forces cannot move it
       force_accumulator_ = {};
       return;
     }
-    if (t == real(0)) return;
 
     const Vector3<acceleration_type> resulting_acceleration =
         typed<acceleration_type>(acceleration_) +
@@ -184,12 +171,6 @@ class BasicParticle {
   template <class T>
   POINTMASS_HD static constexpr Vector3<real> raw(const Vector3<T>& v) noexcept {
     return {Q::raw(v.x), Q::raw(v.y), Q::raw(v.z)};
-  }
-  static constexpr bool check_finite(const char* function, const char* argument,
-                                     const Vector3<real>& v) {
-    if (is_finite(v)) return true;
-    detail::report_vector(function, argument, "finite", v);
-    return false;
   }
 
   Vector3<real> position_{};

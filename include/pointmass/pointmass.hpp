@@ -4,6 +4,7 @@
 
 #include "config.hpp"
 #include "damping.hpp"
+#include "features.hpp"
 #include "forces.hpp"
 #include "gravity.hpp"
 #include "particle.hpp"
@@ -11,5 +12,4 @@
 #include "position.hpp"
 #include "quantities.hpp"
 #include "real.hpp"
-#include "scenes.hpp"
 #include "vector3.hpp"

@@ -63,7 +63,9 @@ struct Kinematic {
   POINTMASS_HD static constexpr P position(const P& p0, const V& v0, const V&, const A& a,
                                            const T& t, const F&) noexcept {
     using R = scalar_t<T>;
-    return p0 + v0 * t + a * (t * t * R(0.5));
+    // (a t)(t / 2), not a (t t / 2): t t overflows for steps of 1e19 s (float), and a body
+    // at rest (a = 0) would then get 0 * inf = NaN.
+    return p0 + v0 * t + (a * t) * (t * R(0.5));
   }
 };
 
@@ -114,7 +116,7 @@ struct Exact {
     if constexpr (std::is_empty_v<F>) {
       return Kinematic::position(p0, v0, v0, a, t, factors);
     } else {
-      return p0 + v0 * (t * factors.phi1) + a * (t * t * factors.phi2);
+      return p0 + v0 * (t * factors.phi1) + (a * t) * (t * factors.phi2);  // as Kinematic
     }
   }
 };
@@ -126,14 +128,26 @@ namespace pointmass {
 /// True when the pair (D, P) steps exactly along the continuous model for constant
 /// acceleration at any step length (its error is rounding only): (None, Kinematic),
 /// (None, Exact) and (Exact, Exact).
+/// (A policy that does not state its exactness is taken as not exact.)
 template <class D, class P>
-inline constexpr bool is_exact_for_constant_acceleration_v =
-    D::exact_for_constant_acceleration && P::template exact_for_constant_acceleration<D>;
+inline constexpr bool is_exact_for_constant_acceleration_v = [] {
+  if constexpr (requires {
+                  requires D::exact_for_constant_acceleration;
+                  requires P::template exact_for_constant_acceleration<D>;
+                }) {
+    return true;
+  } else {
+    return false;
+  }
+}();
 
 /// The pair's global order of accuracy against the continuous model when the acceleration
-/// varies over a step (a spring): the lower of the two policies' orders.
+/// varies over a step (a spring): the lower of the two policies' orders (1 where a policy
+/// does not state one).
 template <class D, class P>
-inline constexpr int order_v = D::order < P::order ? D::order : P::order;
+inline constexpr int order_v = detail::stated_order<D>() < detail::stated_order<P>()
+                                   ? detail::stated_order<D>()
+                                   : detail::stated_order<P>();
 
 /// A position policy usable with damping policy D (checked for float and double).
 template <class P, class D>

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <concepts>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 
@@ -31,17 +32,51 @@ struct ScalarOf {
 template <class T>
 using scalar_t = typename ScalarOf<T>::type;
 
-// The builtins below are what <cmath> calls; used directly they are also usable in constant
-// expressions (g++ and clang) and raise no floating-point exception on NaN or infinity.
+namespace detail {
+
+/// The unsigned integer of R's size and R's exponent field, for float and double.
+template <class R>
+struct FloatBits {
+  using type = std::conditional_t<sizeof(R) == 4, std::uint32_t, std::uint64_t>;
+  static constexpr type exponent_mask =
+      static_cast<type>(sizeof(R) == 4 ? 0x7f800000u : 0x7ff0000000000000u);
+  static constexpr type magnitude_mask =
+      static_cast<type>(sizeof(R) == 4 ? 0x7fffffffu : 0x7fffffffffffffffu);
+};
+
+template <class R>
+inline constexpr bool has_ieee_bits_v =
+    (std::same_as<R, float> && sizeof(float) == 4) ||
+    (std::same_as<R, double> && sizeof(double) == 8);
+
+}  // namespace detail
+
+// NaN and infinity are told apart by their bit patterns (float and double), so validation
+// holds under -ffast-math and -ffinite-math-only, where the compilers fold isnan(x) to false.
+// The builtins (what <cmath> calls) serve long double, whose layout varies; they, too, are
+// usable in constant expressions and raise no floating-point exception on NaN or infinity.
+// docs/numerics.md says what still changes under those flags.
 
 template <Real R>
 POINTMASS_HD constexpr bool real_isnan(R x) noexcept {
-  return __builtin_isnan(x);
+  if constexpr (detail::has_ieee_bits_v<R>) {
+    using Bits = detail::FloatBits<R>;
+    return (__builtin_bit_cast(typename Bits::type, x) & Bits::magnitude_mask) >
+           Bits::exponent_mask;
+  } else {
+    return __builtin_isnan(x);
+  }
 }
 
 template <Real R>
 POINTMASS_HD constexpr bool real_isfinite(R x) noexcept {
-  return __builtin_isfinite(x);
+  if constexpr (detail::has_ieee_bits_v<R>) {
+    using Bits = detail::FloatBits<R>;
+    return (__builtin_bit_cast(typename Bits::type, x) & Bits::exponent_mask) !=
+           Bits::exponent_mask;
+  } else {
+    return __builtin_isfinite(x);
+  }
 }
 
 template <Real R>

@@ -1,4 +1,4 @@
-// Force generators on the batch: a ParticleSystem with features::Forces satisfies the Bodies
+// Force generators on the batch: a ParticleSystem with features::ForceAccumulator satisfies the Bodies
 // concept itself, and its arrays can be wrapped in SoaBodies; both give a particle's bits.
 #include <doctest/doctest.h>
 
@@ -18,7 +18,7 @@ namespace position = pointmass::position;
 TEST_CASE_TEMPLATE("generators on a ParticleSystem match Particle, through apply and SoaBodies",
                    R, float, double) {
   using System = pointmass::ParticleSystem<R, damping::None, position::SemiImplicit,
-                                           pointmass::features::Forces>;
+                                           pointmass::features::ForceAccumulator>;
   using Body = pointmass::Particle<R, damping::None, position::SemiImplicit>;
   static_assert(forces::Bodies<System>);
   const std::array<Vector3<R>, 3> p{{{R(0), R(0.2), R(0)}, {R(1), R(-1), R(0)}, {R(2), R(3), R(1)}}};
@@ -47,8 +47,10 @@ TEST_CASE_TEMPLATE("generators on a ParticleSystem match Particle, through apply
     forces::apply(gravity, direct, dt);
     forces::SoaBodies<R> soa{wrapped.position_x(), wrapped.position_y(), wrapped.position_z(),
                              wrapped.velocity_x(), wrapped.velocity_y(), wrapped.velocity_z(),
-                             wrapped.inverse_masses(), wrapped.force_x(), wrapped.force_y(),
-                             wrapped.force_z()};
+                             wrapped.template column<pointmass::Column::inverse_mass>(),
+                             wrapped.template column<pointmass::Column::force_x>(),
+                             wrapped.template column<pointmass::Column::force_y>(),
+                             wrapped.template column<pointmass::Column::force_z>()};
     forces::apply(drag, soa, dt);
     forces::apply(buoyancy, soa, dt);
     forces::apply(gravity, soa, dt);

@@ -56,8 +56,8 @@ std::uint64_t run(const char* name, int steps, Digest& overall) {
   // Per-particle damping where the policy has a damping value (None has none).
   using System =
       std::conditional_t<std::is_empty_v<typename D::template State<R>>,
-                         ParticleSystem<R, D, P, features::Forces>,
-                         ParticleSystem<R, D, P, features::PerParticleDamping, features::Forces>>;
+                         ParticleSystem<R, D, P, features::ForceAccumulator>,
+                         ParticleSystem<R, D, P, features::PerParticleDamping, features::ForceAccumulator>>;
   System system(count);
   system.set_acceleration(gravity);
   for (int i = 0; i < count; ++i) {

@@ -16,7 +16,7 @@
 #include <pointmass/damping.hpp>
 #include <pointmass/particle.hpp>
 #include <pointmass/position.hpp>
-#include <pointmass/scenes.hpp>
+#include <pointmass/extras/scenes.hpp>
 #include <pointmass/vector3.hpp>
 
 #include "reference_solution.hpp"

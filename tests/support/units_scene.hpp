@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <vector>
 
-#include <pointmass/scenes.hpp>
+#include <pointmass/extras/scenes.hpp>
 
 namespace pointmass::test {
 

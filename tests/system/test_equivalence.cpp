@@ -102,8 +102,8 @@ TEST_CASE_TEMPLATE_DEFINE(
   using System = std::conditional_t<
       damped,
       ParticleSystem<R, D, P, features::PerParticleDamping, features::PerParticleAcceleration,
-                     features::Forces>,
-      ParticleSystem<R, D, P, features::PerParticleAcceleration, features::Forces>>;
+                     features::ForceAccumulator>,
+      ParticleSystem<R, D, P, features::PerParticleAcceleration, features::ForceAccumulator>>;
   std::mt19937 engine(7);
   std::uniform_real_distribution<R> damping(R(0), R(1));
   std::uniform_real_distribution<R> mass(R(0.25), R(4));

@@ -64,11 +64,11 @@ TEST_CASE_TEMPLATE("each feature stores its arrays, and nothing else", R, float,
       ParticleSystem<R, damping::Exact, position::Exact, features::PerParticleDamping>;
   using Accelerated = ParticleSystem<R, damping::PerFrame, position::Euler,
                                      features::PerParticleAcceleration>;
-  using Forced = ParticleSystem<R, damping::None, position::Euler, features::Forces>;
+  using Forced = ParticleSystem<R, damping::None, position::Euler, features::ForceAccumulator>;
   using Aging = ParticleSystem<R, damping::None, position::Euler, features::Lifetime>;
   using Everything =
       ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
-                     features::Forces, features::PerParticleAcceleration,
+                     features::ForceAccumulator, features::PerParticleAcceleration,
                      features::PerParticleDamping>;
 
   static_assert(Bare::storage_bytes_per_particle == 6 * sizeof(R));
@@ -81,16 +81,18 @@ TEST_CASE_TEMPLATE("each feature stores its arrays, and nothing else", R, float,
   static_assert(Everything::storage_bytes_per_particle == 16 * sizeof(R));
 
   // The accessors of what is not stored do not exist.
-  static_assert(!requires(Bare& s) { s.acceleration_x(); });
+  static_assert(!requires(Bare& s) { s.template column<Column::acceleration_x>(); });
+  static_assert(requires(Accelerated& s) { s.template column<Column::acceleration_x>(); });
   static_assert(!requires(Bare& s) { s.set_damping(R(1)); });  // damping::None has none
   static_assert(!requires(Sparks& s) { s.set_damping(std::size_t{0}, R(1)); });
   static_assert(requires(Sparks& s) { s.set_damping(R(1)); });
-  static_assert(requires(Damped& s) { s.damping_states(); });
+  static_assert(requires(Damped& s) { s.template column<Column::damping>(); });
+  static_assert(!Sparks::template stores<Column::damping> && Damped::template stores<Column::damping>);
   static_assert(!requires(Damped& s) { s.set_damping(R(1)); });  // no uniform value either
   static_assert(!requires(Sparks& s) { s.add_force(std::size_t{0}, Vector3<R>{}); });
   static_assert(requires(Forced& s) { s.add_force(std::size_t{0}, Vector3<R>{}); });
-  static_assert(!requires(Sparks& s) { s.ages(); });
-  static_assert(requires(Aging& s) { s.ages(); });
+  static_assert(!requires(Sparks& s) { s.template column<Column::age>(); });
+  static_assert(requires(Aging& s) { s.template column<Column::age>(); });
   static_assert(requires(Accelerated& s) { s.set_acceleration(std::size_t{0}, Vector3<R>{}); });
   static_assert(!requires(Accelerated& s) { s.set_acceleration(Vector3<R>{}); });
 
@@ -126,7 +128,7 @@ TEST_CASE_TEMPLATE("uniform damping computes its factors once per step, per-part
 TEST_CASE_TEMPLATE("arrays share one block, 64-byte aligned, staggered within their pages", R,
                    float, double) {
   using Everything = ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
-                                    features::Forces, features::PerParticleAcceleration,
+                                    features::ForceAccumulator, features::PerParticleAcceleration,
                                     features::PerParticleDamping>;
   for (const std::size_t capacity : {std::size_t{1}, std::size_t{1000}, std::size_t{100000}}) {
     CAPTURE(capacity);
@@ -265,21 +267,21 @@ TEST_CASE_TEMPLATE("capacity is reserved up front, a step allocates nothing, gro
 }
 
 TEST_CASE_TEMPLATE("spans view the live particles and write through", R, float, double) {
-  ParticleSystem<R, damping::None, position::Euler, features::Forces> system(10);
+  ParticleSystem<R, damping::None, position::Euler, features::ForceAccumulator> system(10);
   for (int i = 0; i < 3; ++i) system.spawn({R(i), R(2 * i), R(3 * i)}, {});
   CHECK(system.position_y().size() == 3);
   CHECK(system.position_y()[2] == R(4));
   system.velocity_x()[1] = R(10);
   system.step(R(0.5));
   CHECK(system.position(1).x == R(1) + R(10) * R(0.5));
-  system.inverse_masses()[1] = R(0);  // immovable from now on
+  system.template column<Column::inverse_mass>()[1] = R(0);  // immovable from now on
   system.step(R(0.5));
   CHECK(system.position(1).x == R(6));
 }
 
 TEST_CASE_TEMPLATE("bad input is reported with the argument's name and value", R, float, double) {
   using System = ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
-                                features::Forces>;
+                                features::ForceAccumulator>;
   System system(4);
   const R nan = std::numeric_limits<R>::quiet_NaN();
   auto message = [](auto&& call) -> std::string {

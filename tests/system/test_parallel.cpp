@@ -1,7 +1,6 @@
 // pointmass::step(std::execution::par_unseq, system, t) computes what system.step(t) does,
 // bit for bit, over many chunks.
-#define POINTMASS_ENABLE_PARALLEL 1
-#include <pointmass/particle_system.hpp>
+#include <pointmass/parallel.hpp>
 
 #include <doctest/doctest.h>
 

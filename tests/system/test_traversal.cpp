@@ -90,14 +90,14 @@ TEST_CASE_TEMPLATE("alternating walk with per-particle values, forces and lifeti
                    double) {
   using Featured = ParticleSystem<R, damping::Exact, position::Exact,
                                   features::PerParticleDamping,
-                                  features::PerParticleAcceleration, features::Forces,
+                                  features::PerParticleAcceleration, features::ForceAccumulator,
                                   features::Lifetime>;
   constexpr std::size_t count = 2 * Featured::alternation_floor_bytes /
                                     Featured::storage_bytes_per_particle +
                                 Featured::backward_chunk / 2;
   REQUIRE(Featured::alternates(count));
   step_side_by_side<R, damping::Exact, position::Exact, features::PerParticleDamping,
-                    features::PerParticleAcceleration, features::Forces, features::Lifetime>(
+                    features::PerParticleAcceleration, features::ForceAccumulator, features::Lifetime>(
       count, 4, Walk::by_step_alternating);
   step_side_by_side<R, damping::PerFrame, position::SemiImplicit,
                     features::PerParticleAcceleration>(531, 3, Walk::backward_only);

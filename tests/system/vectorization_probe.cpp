@@ -28,14 +28,14 @@ void step_undamped(pm::ParticleSystem<float, pm::damping::None>& system, float t
 #if defined(POINTMASS_PROBE_BACKWARD)
 void step_featured(pm::ParticleSystem<float, pm::damping::PerFrame, pm::position::Kinematic,
                                       pm::features::PerParticleAcceleration,
-                                      pm::features::Forces>& system,
+                                      pm::features::ForceAccumulator>& system,
                    float t) {
   probe(system, t);
 }
 #else
 void step_featured(pm::ParticleSystem<float, pm::damping::PerFrame, pm::position::Kinematic,
                                       pm::features::PerParticleAcceleration,
-                                      pm::features::Forces, pm::features::Lifetime>& system,
+                                      pm::features::ForceAccumulator, pm::features::Lifetime>& system,
                    float t) {
   probe(system, t);
 }

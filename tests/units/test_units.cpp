@@ -11,7 +11,7 @@
 #include <type_traits>
 
 #include <pointmass/particle.hpp>
-#include <pointmass/scenes.hpp>
+#include <pointmass/extras/scenes.hpp>
 #include <pointmass/units.hpp>
 
 #include "tolerance.hpp"

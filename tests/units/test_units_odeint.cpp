@@ -15,7 +15,7 @@
 #include <boost/numeric/odeint/algebra/fusion_algebra_dispatcher.hpp>
 #include <boost/units/systems/si/frequency.hpp>
 
-#include <pointmass/scenes.hpp>
+#include <pointmass/extras/scenes.hpp>
 #include <pointmass/units.hpp>
 
 namespace pm = pointmass;

@@ -60,7 +60,7 @@ void instantiate_all(Particle<R>* any) {
   ParticleSystem<R> sparks(64);
   launch_system(sparks, R(1) / 60);
   ParticleSystem<R, damping::Exact, position::Exact, features::PerParticleDamping,
-                 features::PerParticleAcceleration, features::Forces, features::Lifetime>
+                 features::PerParticleAcceleration, features::ForceAccumulator, features::Lifetime>
       everything(64);
   launch_system(everything, R(1) / 60);
 }

@@ -659,13 +659,13 @@ using SystemConfigs = std::tuple<
     SystemConfig<ParticleSystem<R>>,
     SystemConfig<ParticleSystem<R, damping::None, position::Exact,
                                  features::PerParticleAcceleration>>,
-    SystemConfig<ParticleSystem<R, damping::PerFrame, position::SemiImplicit, features::Forces>>,
+    SystemConfig<ParticleSystem<R, damping::PerFrame, position::SemiImplicit, features::ForceAccumulator>>,
     SystemConfig<ParticleSystem<R, damping::AccelerateThenDamp, position::Kinematic,
                                  features::PerParticleDamping, features::Lifetime>>,
     SystemConfig<ParticleSystem<R, damping::Exact, position::Exact, features::PerParticleDamping,
-                                 features::PerParticleAcceleration, features::Forces,
+                                 features::PerParticleAcceleration, features::ForceAccumulator,
                                  features::Lifetime>>,
-    SystemConfig<ParticleSystem<R, damping::PerSecond, position::SemiImplicit, features::Forces,
+    SystemConfig<ParticleSystem<R, damping::PerSecond, position::SemiImplicit, features::ForceAccumulator,
                                  features::Lifetime>>>;
 
 template <class... A, class... B>

@@ -1,4 +1,5 @@
-// pointmass/scenes.hpp — ready-made scenes: the reference engine's ballistic shots and a
+// pointmass/extras/scenes.hpp — ready-made scenes (not in the umbrella header: include it
+// explicitly): the reference engine's ballistic shots and a
 // mass on a spring. The tests, examples and benchmarks all use these, so every accuracy and
 // speed figure the project reports is about the same work.
 #pragma once
@@ -6,8 +7,8 @@
 #include <array>
 #include <string_view>
 
-#include "real.hpp"
-#include "vector3.hpp"
+#include "../real.hpp"
+#include "../vector3.hpp"
 
 namespace pointmass::scenes {
 

@@ -1,0 +1,244 @@
+// pointmass/detail/system_kernel.hpp — the step of a ParticleSystem's arrays.
+//
+// Owns: what a step shares (StepParameters), the step of one particle (step_particle), the
+// vectorised loop over a segment of particles, and the forward and backward walks
+// (step_range, step_range_backward). All static: the kernel holds no data, so a CUDA, Thrust
+// or Kokkos loop over step_particle runs the same arithmetic as ParticleSystem::step.
+//
+// Vectorisation: the step loop runs over a trip count that is a multiple of vector_block (the
+// rest apart) and tells the compiler its arrays do not overlap (`#pragma GCC ivdep`, or
+// clang's `vectorize(assume_safety)`), so g++ and clang vectorise it at plain -O2 as well as
+// at -O3; -march=native (or -mavx2 -mfma) widens the vectors. See docs/performance.md.
+//
+// Traversal: while the arrays take more than `alternation_floor_bytes` (32 KiB) and at most
+// `alternation_limit_bytes` (8 MiB), ParticleSystem::step walks the particles forwards and
+// backwards in turn, so each step begins on the data the previous one left in cache.
+//
+// Must not include: particle_system.hpp, parallel.hpp (the kernel is below the public API).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+
+#include "../config.hpp"
+#include "../damping.hpp"
+#include "../particle.hpp"
+#include "../position.hpp"
+#include "../real.hpp"
+#include "../vector3.hpp"
+#include "validate.hpp"
+
+#if defined(__clang__)
+#define POINTMASS_DETAIL_INDEPENDENT_ITERATIONS _Pragma("clang loop vectorize(assume_safety)")
+#elif defined(__GNUC__)
+#define POINTMASS_DETAIL_INDEPENDENT_ITERATIONS _Pragma("GCC ivdep")
+#else
+#define POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
+#endif
+
+// The step kernel is inlined into its loop even at -O2, where g++ would otherwise call the
+// larger configurations' kernel and so not vectorise the loop.
+#if defined(__GNUC__)
+#define POINTMASS_DETAIL_INLINE [[gnu::always_inline]]
+#else
+#define POINTMASS_DETAIL_INLINE
+#endif
+
+namespace pointmass::detail {
+
+struct NoFactors {};
+
+template <Real R, DampingPolicy D, PositionPolicyFor<D> P, class Layout>
+class SystemKernel {
+ public:
+  using Arrays = typename Layout::Arrays;
+  using damping_factors = damping_factors_t<D, R>;
+
+  /// What every particle's step shares: the duration, the uniform damping factors (d^t, ...)
+  /// and the uniform acceleration, where the configuration has them.
+  struct StepParameters {
+    R duration{};
+    [[no_unique_address]] std::conditional_t<Layout::per_particle_damping, NoFactors,
+                                             damping_factors> factors{};
+    Vector3<R> acceleration{};
+  };
+
+  /// False when a step calls a power function (or expm1) per particle: per-particle damping
+  /// with any policy but PerFrame. Only a vectorisable loop is marked for vectorisation.
+  static constexpr bool vectorisable =
+      !Layout::per_particle_damping || std::is_same_v<D, damping::PerFrame>;
+
+  /// The loop's trip count is a multiple of this (the widest vector: 16 floats, 8 doubles).
+  static constexpr std::size_t vector_block = 16;
+  /// The backward walk's chunk, a multiple of vector_block.
+  static constexpr std::size_t backward_chunk = 256;
+  static_assert(backward_chunk % vector_block == 0);
+
+  /// While the arrays take at most this many bytes, `step` walks the particles forwards and
+  /// backwards in turn: each step then starts on the particles the step before finished
+  /// with, still in the processor's caches, instead of on those evicted longest ago. The
+  /// results are the same either way (every particle's step is independent of the others).
+  /// Beyond a few times the size of a core's L2 cache, the cached share is too small to
+  /// repay the backward walk's weaker hardware prefetch, so larger systems always walk
+  /// forwards. docs/performance.md has the measurements on both sides of the limit.
+  static constexpr std::size_t alternation_limit_bytes = std::size_t{8} << 20;
+  /// Arrays that fit in a 32 KiB L1 data cache stay there whichever way a step walks, so
+  /// systems this small (1,365 float or 682 double particles with six arrays) always walk
+  /// forwards, the cheaper loop.
+  static constexpr std::size_t alternation_floor_bytes = std::size_t{32} << 10;
+
+  /// True when `step` alternates its walk for a system of `count` particles: when their
+  /// arrays take more than alternation_floor_bytes and at most alternation_limit_bytes.
+  static constexpr bool alternates(std::size_t count) noexcept {
+    const std::size_t limit_count = alternation_limit_bytes / Layout::bytes_per_particle;
+    const std::size_t floor_count = alternation_floor_bytes / Layout::bytes_per_particle;
+    return count > floor_count && count <= limit_count;
+  }
+
+  /// The step of particle i, as Particle::integrate computes it:
+  ///   a  = acceleration + force * inverse_mass;  v1 = D::velocity(v0, a, t, f);
+  ///   p1 = P::position(p0, v0, v1, a, t, f);     force = 0;  age += t
+  /// on each of x, y and z (advance<D, P> in particle.hpp). A particle of inverse mass 0 does
+  /// not move. Plain arithmetic on the arrays: runs on a GPU as it runs here (see
+  /// docs/hardening.md for the compiler settings under which a device gives the same bits).
+  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void step_particle(
+      const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
+    const R t = parameters.duration;
+    const auto factors = factors_of(arrays, i, parameters);
+    R ax, ay, az;
+    if constexpr (Layout::per_particle_acceleration) {
+      ax = arrays.acceleration_x[i];
+      ay = arrays.acceleration_y[i];
+      az = arrays.acceleration_z[i];
+    } else {
+      ax = parameters.acceleration.x;
+      ay = parameters.acceleration.y;
+      az = parameters.acceleration.z;
+    }
+    if constexpr (Layout::has_forces) {
+      const R inverse_mass = arrays.inverse_mass[i];
+      ax = ax + arrays.force_x[i] * inverse_mass;
+      ay = ay + arrays.force_y[i] * inverse_mass;
+      az = az + arrays.force_z[i] * inverse_mass;
+      arrays.force_x[i] = R(0);
+      arrays.force_y[i] = R(0);
+      arrays.force_z[i] = R(0);
+      const bool movable = inverse_mass > R(0);
+      advance_if(movable, arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
+      advance_if(movable, arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
+      advance_if(movable, arrays.position_z[i], arrays.velocity_z[i], az, t, factors);
+    } else {
+      advance<D, P>(arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
+      advance<D, P>(arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
+      advance<D, P>(arrays.position_z[i], arrays.velocity_z[i], az, t, factors);
+    }
+    if constexpr (Layout::has_lifetime) arrays.age[i] += t;
+  }
+
+#if defined(__clang__)
+#pragma clang diagnostic push
+  // Some configurations do not vectorise (a power function per particle; clang 14 also
+  // declines float damping::Exact). clang reports that against the function, not the loop,
+  // so the whole function is in the region where the warning is off: -Werror builds of
+  // users' code must not fail on it.
+#pragma clang diagnostic ignored "-Wpass-failed"
+#endif
+  /// Steps particles [begin, end) of `arrays`: the vectorised loop over step_particle.
+  /// begin <= end <= arrays.size is a precondition, checked when POINTMASS_CHECKS is on.
+  static void step_range(const Arrays& arrays_in, std::size_t begin, std::size_t end,
+                         const StepParameters& parameters_in) noexcept(!POINTMASS_HOST_CHECKS) {
+#if POINTMASS_HOST_CHECKS
+    if (!check_range("step_range", begin, end, arrays_in.size)) return;
+#endif
+    // Local copies: the loop's stores cannot alias them, so the compiler keeps the shared
+    // values in registers instead of reloading them for every vector of particles.
+    const Arrays arrays = arrays_in;
+    const StepParameters parameters = parameters_in;
+    step_segment(arrays, begin, end - begin, parameters);
+  }
+
+  /// Steps particles [begin, end) as step_range does, with the same results, but walks them
+  /// from the end: the part past the last whole chunk of backward_chunk first, then whole
+  /// chunks from the last to the first, each chunk forwards through the same vectorised
+  /// loop (a single copy of it in this function: clang 14 lost the loop's no-alias mark on
+  /// a second inlined copy and left that copy scalar). Same precondition as step_range.
+  static void step_range_backward(const Arrays& arrays_in, std::size_t begin, std::size_t end,
+                                  const StepParameters& parameters_in) noexcept(
+      !POINTMASS_HOST_CHECKS) {
+#if POINTMASS_HOST_CHECKS
+    if (!check_range("step_range_backward", begin, end, arrays_in.size)) return;
+#endif
+    const Arrays arrays = arrays_in;  // local copies, as in step_range
+    const StepParameters parameters = parameters_in;
+    std::size_t first = end - (end - begin) % backward_chunk;
+    std::size_t count = end - first;
+    for (;;) {
+      step_segment(arrays, first, count, parameters);
+      if (first == begin) break;
+      first -= backward_chunk;
+      count = backward_chunk;
+    }
+  }
+
+ private:
+  // Particles [first, first + count): the loop marked for vectorisation (when the
+  // configuration can vectorise) over a trip count that is a multiple of vector_block, which
+  // lets g++'s -O2 cost model vectorise it without a remainder loop; then the remainder.
+  POINTMASS_DETAIL_INLINE static void step_segment(const Arrays& arrays, std::size_t first,
+                                                   std::size_t count,
+                                                   const StepParameters& parameters) noexcept {
+    const std::size_t blocked = count & ~(vector_block - 1);
+    if constexpr (vectorisable) {
+      POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
+      for (std::size_t k = 0; k < blocked; ++k) step_particle(arrays, first + k, parameters);
+    } else {  // a power function per particle: no vector loop to ask for
+      for (std::size_t k = 0; k < blocked; ++k) step_particle(arrays, first + k, parameters);
+    }
+    for (std::size_t k = blocked; k < count; ++k) step_particle(arrays, first + k, parameters);
+  }
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
+
+  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr auto factors_of(
+      const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
+    if constexpr (Layout::per_particle_damping) {
+      return D::factors(arrays.damping[i], parameters.duration);
+    } else {
+      static_cast<void>(arrays);
+      static_cast<void>(i);
+      return parameters.factors;
+    }
+  }
+
+  // Both outcomes computed, one kept: a select the vectoriser can do, where a branch is not.
+  template <class F>
+  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void advance_if(
+      bool movable, R& p, R& v, R a, R t, const F& factors) noexcept {
+    R p1 = p;
+    R v1 = v;
+    advance<D, P>(p1, v1, a, t, factors);
+    p = select(movable, p1, p);
+    v = select(movable, v1, v);
+  }
+
+  // condition ? if_true : if_false, as bit operations (g++ -O2 does not if-convert `?:` here).
+  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr R select(bool condition, R if_true,
+                                                                 R if_false) noexcept {
+    if constexpr (sizeof(R) == 4 || sizeof(R) == 8) {
+      using Bits = std::conditional_t<sizeof(R) == 4, std::uint32_t, std::uint64_t>;
+      const Bits mask = Bits(0) - static_cast<Bits>(condition);
+      return __builtin_bit_cast(
+          R, static_cast<Bits>((__builtin_bit_cast(Bits, if_true) & mask) |
+                               (__builtin_bit_cast(Bits, if_false) & ~mask)));
+    } else {
+      return condition ? if_true : if_false;
+    }
+  }
+};
+
+}  // namespace pointmass::detail
+
+#undef POINTMASS_DETAIL_INLINE
+#undef POINTMASS_DETAIL_INDEPENDENT_ITERATIONS

@@ -1,0 +1,126 @@
+// pointmass/detail/validate.hpp — the library's argument checks, written once.
+//
+// Owns: what "a valid mass", "a valid damping", "a finite vector", "a valid index", ... mean,
+// and the report each failure makes. Every public setter of Particle, ParticleSystem and the
+// force generators validates through these functions, so one rule has one wording.
+// Each returns true when the argument is valid; otherwise it reports a ContractViolation
+// (config.hpp) naming the function, the argument and its value, and returns false, and the
+// caller changes nothing. NaN and infinity are found by bit pattern (real.hpp), so the checks
+// hold under -ffast-math too.
+//
+// Must not include: anything but config.hpp, real.hpp and vector3.hpp (it is below every
+// header that validates).
+#pragma once
+
+#include <cstddef>
+#include <limits>
+
+#include "../config.hpp"
+#include "../real.hpp"
+#include "../vector3.hpp"
+
+namespace pointmass::detail {
+
+/// A vector with three finite components.
+template <Real R>
+constexpr bool check_finite(const char* function, const char* argument, const Vector3<R>& v) {
+  if (is_finite(v)) return true;
+  report_vector(function, argument, "finite", v);
+  return false;
+}
+
+/// A finite number.
+template <Real R>
+constexpr bool check_finite(const char* function, const char* argument, R value) {
+  if (real_isfinite(value)) return true;
+  report_scalar(function, argument, "finite", value);
+  return false;
+}
+
+/// A damping value: the fraction of velocity kept, in [0, 1].
+template <Real R>
+constexpr bool check_damping(const char* function, R damping) {
+  if (!real_isnan(damping) && damping >= R(0) && damping <= R(1)) return true;
+  report_scalar(function, "damping", "in [0, 1]", damping);
+  return false;
+}
+
+/// A mass: > 0 (infinity: immovable), with 1/mass finite and not subnormal, so that
+/// mass() == 1 / inverse_mass() stays finite for every finite mass accepted.
+template <Real R>
+constexpr bool check_mass(const char* function, R mass) {
+  const R inverse = R(1) / mass;
+  if (!real_isnan(mass) && mass > R(0) &&
+      (inverse == R(0) || (real_isfinite(inverse) && inverse >= std::numeric_limits<R>::min()))) {
+    return true;
+  }
+  report_scalar(function, "mass", "> 0 and not NaN, with 1/mass finite and normal", mass);
+  return false;
+}
+
+/// An inverse mass: 0 (immovable) or a finite normal number > 0.
+template <Real R>
+constexpr bool check_inverse_mass(const char* function, R inverse_mass) {
+  if (inverse_mass == R(0) ||
+      (real_isfinite(inverse_mass) && inverse_mass >= std::numeric_limits<R>::min())) {
+    return true;
+  }
+  report_scalar(function, "inverse_mass", ">= 0 and finite, and not subnormal", inverse_mass);
+  return false;
+}
+
+/// A step's duration: finite and >= 0.
+template <Real R>
+constexpr bool check_duration(const char* function, R duration) {
+  if (real_isfinite(duration) && duration >= R(0)) return true;
+  report_scalar(function, "duration", "finite and >= 0", duration);
+  return false;
+}
+
+/// A lifetime in seconds: > 0 (infinity: for ever).
+template <Real R>
+constexpr bool check_lifetime(const char* function, R seconds) {
+  if (!real_isnan(seconds) && seconds > R(0)) return true;
+  report_scalar(function, "seconds", "> 0 (infinity: for ever)", seconds);
+  return false;
+}
+
+/// A number >= 0 (and not NaN); `finite` also rejects infinity.
+template <Real R>
+constexpr bool check_non_negative(const char* function, const char* argument, R value,
+                                  bool finite = true) {
+  if (!real_isnan(value) && value >= R(0) && (!finite || real_isfinite(value))) return true;
+  report_scalar(function, argument, finite ? ">= 0 and finite" : ">= 0 and not NaN", value);
+  return false;
+}
+
+/// A number > 0 and finite.
+template <Real R>
+constexpr bool check_positive(const char* function, const char* argument, R value) {
+  if (real_isfinite(value) && value > R(0)) return true;
+  report_scalar(function, argument, "> 0 and finite", value);
+  return false;
+}
+
+/// An index of a live particle: < size.
+constexpr bool check_index(const char* function, std::size_t index, std::size_t size) {
+  if (index < size) return true;
+  report_scalar(function, "index", "< size()", index);
+  return false;
+}
+
+/// A range of live particles: begin <= end <= size.
+constexpr bool check_range(const char* function, std::size_t begin, std::size_t end,
+                           std::size_t size) {
+  if (end > size) {
+    report_scalar(function, "end", "<= size()", end);
+    return false;
+  }
+  if (begin > end) {
+    report_scalar(function, "begin", "<= end", begin);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace pointmass::detail

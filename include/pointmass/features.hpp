@@ -1,0 +1,196 @@
+// pointmass/features.hpp — what a ParticleSystem may store, and the table of its arrays.
+//
+// Owns: the feature tags (namespace pointmass::features), the `Column` names of the arrays,
+// and `detail::SystemLayout`, the compile-time table that says which arrays a configuration
+// stores, of what element type, and so how many and how many bytes per particle. Everything
+// that walks the arrays (allocation, copy, swap-remove, the step) is generated from the one
+// table below: adding an array is one line in it (and its name in `Column`).
+//
+// Must not include: particle.hpp, particle_system.hpp or anything that steps (this header is
+// below the storage and the kernel).
+#pragma once
+
+#include <cstddef>
+#include <tuple>
+#include <type_traits>
+
+#include "damping.hpp"
+#include "real.hpp"
+
+namespace pointmass::features {
+
+/// Each particle has its own damping value (set_damping(i, d)).
+struct PerParticleDamping {};
+/// Each particle has its own acceleration (set_acceleration(i, a)); otherwise one for all.
+struct PerParticleAcceleration {};
+/// Each particle has an inverse mass and a force accumulator (add_force(i, f)).
+struct ForceAccumulator {};
+/// Each particle has an age and a lifetime; a step removes those whose age reaches it.
+struct Lifetime {};
+
+/// The former name of ForceAccumulator.
+using Forces [[deprecated("renamed features::ForceAccumulator")]] = ForceAccumulator;
+
+}  // namespace pointmass::features
+
+namespace pointmass {
+
+/// The arrays a ParticleSystem's block can hold, for `system.column<Column::age>()`; in the
+/// order of the table in detail::SystemLayout.
+enum class Column : unsigned char {
+  position_x,
+  position_y,
+  position_z,
+  velocity_x,
+  velocity_y,
+  velocity_z,
+  acceleration_x,
+  acceleration_y,
+  acceleration_z,
+  inverse_mass,
+  force_x,
+  force_y,
+  force_z,
+  damping,
+  age,
+  lifetime,
+};
+
+namespace detail {
+
+template <class T, class... List>
+inline constexpr bool contains_v = (std::is_same_v<T, List> || ...);
+
+template <class T>
+inline constexpr bool is_feature_v =
+    contains_v<T, features::PerParticleDamping, features::PerParticleAcceleration,
+               features::ForceAccumulator, features::Lifetime>;
+
+/// One entry of the table: the Arrays member that holds the column, and whether this
+/// configuration stores it (a column not stored is never allocated, copied or stepped).
+template <auto Member, bool Stored>
+struct ColumnEntry {
+  static constexpr auto member = Member;
+  static constexpr bool stored = Stored;
+};
+
+template <class Class, class T>
+T element_of(T* Class::*);
+
+// The table: one line per array, in block order (the order of `Column`).
+//   X(name,            element type,   stored when)
+#define POINTMASS_DETAIL_COLUMNS(X)                             \
+  X(position_x,         R,              true)                   \
+  X(position_y,         R,              true)                   \
+  X(position_z,         R,              true)                   \
+  X(velocity_x,         R,              true)                   \
+  X(velocity_y,         R,              true)                   \
+  X(velocity_z,         R,              true)                   \
+  X(acceleration_x,     R,              per_particle_acceleration) \
+  X(acceleration_y,     R,              per_particle_acceleration) \
+  X(acceleration_z,     R,              per_particle_acceleration) \
+  X(inverse_mass,       R,              has_forces)             \
+  X(force_x,            R,              has_forces)             \
+  X(force_y,            R,              has_forces)             \
+  X(force_z,            R,              has_forces)             \
+  X(damping,            damping_state,  per_particle_damping)   \
+  X(age,                R,              has_lifetime)           \
+  X(lifetime,           R,              has_lifetime)
+
+#define POINTMASS_DETAIL_MEMBER(name, type, stored) type* name = nullptr;
+#define POINTMASS_DETAIL_ENTRY(name, type, stored) ColumnEntry<&Arrays::name, (stored)>{},
+
+/// What a configuration stores. Features may come in any order.
+template <Real R, DampingPolicy D, class... Features>
+struct SystemLayout {
+  using damping_state = typename D::template State<R>;
+
+  static constexpr bool per_particle_damping =
+      contains_v<features::PerParticleDamping, Features...>;
+  static constexpr bool per_particle_acceleration =
+      contains_v<features::PerParticleAcceleration, Features...>;
+  static constexpr bool has_forces = contains_v<features::ForceAccumulator, Features...>;
+  static constexpr bool has_lifetime = contains_v<features::Lifetime, Features...>;
+
+  /// Raw pointers to the arrays (nullptr for those the configuration does not store) and
+  /// the number of live particles: what step_particle works on.
+  struct Arrays {
+    POINTMASS_DETAIL_COLUMNS(POINTMASS_DETAIL_MEMBER)
+    std::size_t size = 0;
+  };
+
+  /// Every column's entry, in block order.
+  static constexpr auto columns = std::tuple{POINTMASS_DETAIL_COLUMNS(POINTMASS_DETAIL_ENTRY)};
+
+  template <Column C>
+  using entry = std::tuple_element_t<static_cast<std::size_t>(C), decltype(columns)>;
+  /// The element type of column C.
+  template <Column C>
+  using element_t = decltype(element_of(entry<C>::member));
+  /// True when this configuration stores column C.
+  template <Column C>
+  static constexpr bool stores = entry<C>::stored;
+
+  /// Calls f(pointer) for every stored array of `arrays`, in block order.
+  template <class A, class F>
+  static constexpr void for_each_array(A& arrays, F&& f) {
+    std::apply(
+        [&](auto... entry) {
+          (
+              [&] {
+                if constexpr (decltype(entry)::stored) f(arrays.*(decltype(entry)::member));
+              }(),
+              ...);
+        },
+        columns);
+  }
+
+  /// Calls f(pointer of `to`, pointer of `from`) for every stored array, in block order.
+  template <class F>
+  static constexpr void for_each_array_pair(Arrays& to, const Arrays& from, F&& f) {
+    std::apply(
+        [&](auto... entry) {
+          (
+              [&] {
+                if constexpr (decltype(entry)::stored) {
+                  f(to.*(decltype(entry)::member), from.*(decltype(entry)::member));
+                }
+              }(),
+              ...);
+        },
+        columns);
+  }
+
+  /// How many arrays the block holds.
+  static constexpr std::size_t array_count = std::apply(
+      [](auto... entry) { return (std::size_t{decltype(entry)::stored} + ...); }, columns);
+
+  /// Bytes each particle occupies in the arrays.
+  static constexpr std::size_t bytes_per_particle = std::apply(
+      [](auto... entry) {
+        return ((decltype(entry)::stored ? sizeof(decltype(element_of(decltype(entry)::member)))
+                                         : std::size_t{0}) +
+                ...);
+      },
+      columns);
+
+  /// The largest element of any stored array.
+  static constexpr std::size_t largest_element = std::apply(
+      [](auto... entry) {
+        std::size_t largest = 0;
+        ((largest = decltype(entry)::stored &&
+                            sizeof(decltype(element_of(decltype(entry)::member))) > largest
+                        ? sizeof(decltype(element_of(decltype(entry)::member)))
+                        : largest),
+         ...);
+        return largest;
+      },
+      columns);
+};
+
+#undef POINTMASS_DETAIL_ENTRY
+#undef POINTMASS_DETAIL_MEMBER
+#undef POINTMASS_DETAIL_COLUMNS
+
+}  // namespace detail
+}  // namespace pointmass

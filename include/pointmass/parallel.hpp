@@ -1,0 +1,98 @@
+// pointmass/parallel.hpp — a ParticleSystem's step on the standard execution policies.
+//
+//   #include <pointmass/parallel.hpp>
+//   pointmass::step(std::execution::par_unseq, system, 1.0f / 60);
+//
+// Owns: `pointmass::step(policy, system, t)` and the counting iterator it runs over. Including
+// this header is the opt-in: it alone includes <execution>. With libstdc++ the parallel
+// policies run on TBB, so link TBB (CMake: TBB::tbb). The serial `system.step(t)` never
+// touches threads. (Defining POINTMASS_ENABLE_PARALLEL before particle_system.hpp, the former
+// opt-in, still includes this header for one more release.)
+//
+// Must not include: anything but particle_system.hpp and the standard library.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <execution>
+#include <iterator>
+#include <type_traits>
+#include <utility>
+
+#include "particle_system.hpp"
+
+namespace pointmass {
+
+namespace detail {
+
+/// A random-access iterator over the numbers 0, 1, 2, ...: the chunks a parallel step runs.
+class CountingIterator {
+ public:
+  using iterator_category = std::random_access_iterator_tag;
+  using value_type = std::size_t;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const std::size_t*;
+  using reference = std::size_t;
+
+  CountingIterator() = default;
+  explicit CountingIterator(std::size_t value) noexcept : value_(value) {}
+  std::size_t operator*() const noexcept { return value_; }
+  std::size_t operator[](difference_type n) const noexcept {
+    return value_ + static_cast<std::size_t>(n);
+  }
+  CountingIterator& operator++() noexcept { return ++value_, *this; }
+  CountingIterator operator++(int) noexcept { return CountingIterator(value_++); }
+  CountingIterator& operator--() noexcept { return --value_, *this; }
+  CountingIterator operator--(int) noexcept { return CountingIterator(value_--); }
+  CountingIterator& operator+=(difference_type n) noexcept {
+    value_ += static_cast<std::size_t>(n);
+    return *this;
+  }
+  CountingIterator& operator-=(difference_type n) noexcept {
+    value_ -= static_cast<std::size_t>(n);
+    return *this;
+  }
+  friend CountingIterator operator+(CountingIterator i, difference_type n) noexcept {
+    return i += n;
+  }
+  friend CountingIterator operator+(difference_type n, CountingIterator i) noexcept {
+    return i += n;
+  }
+  friend CountingIterator operator-(CountingIterator i, difference_type n) noexcept {
+    return i -= n;
+  }
+  friend difference_type operator-(CountingIterator a, CountingIterator b) noexcept {
+    return static_cast<difference_type>(a.value_) - static_cast<difference_type>(b.value_);
+  }
+  friend auto operator<=>(CountingIterator, CountingIterator) = default;
+
+ private:
+  std::size_t value_ = 0;
+};
+
+}  // namespace detail
+
+/// Steps `system` by `duration` with the execution policy `policy` (for example
+/// std::execution::par_unseq): the particles are split into chunks of 16,384, each stepped
+/// by the vectorised loop; expiry (Lifetime) then runs on the calling thread. The results
+/// are those of system.step(duration), bit for bit.
+template <class ExecutionPolicy, Real R, class D, class P, class... Features>
+  requires std::is_execution_policy_v<std::remove_cvref_t<ExecutionPolicy>>
+void step(ExecutionPolicy&& policy, ParticleSystem<R, D, P, Features...>& system, R duration) {
+  using System = ParticleSystem<R, D, P, Features...>;
+  if (!system.begin_step(duration)) return;
+  constexpr std::size_t chunk = 16384;
+  const typename System::Arrays& arrays = system.arrays();
+  const typename System::StepParameters parameters = system.step_parameters(duration);
+  const std::size_t size = system.size();
+  const std::size_t chunks = (size + chunk - 1) / chunk;
+  std::for_each(std::forward<ExecutionPolicy>(policy), detail::CountingIterator(0),
+                detail::CountingIterator(chunks), [&](std::size_t c) {
+                  const std::size_t begin = c * chunk;
+                  System::step_range(arrays, begin, std::min(begin + chunk, size), parameters);
+                });
+  system.finish_step();
+}
+
+
+}  // namespace pointmass

@@ -1,0 +1,188 @@
+// ParticleSystem's contracts and size arithmetic: impossible capacities are refused without
+// changing anything, indices and ranges are checked (this executable is built with
+// POINTMASS_ENABLE_CHECKS), a copy is steppable through arrays(), infinite lifetimes never
+// expire, and a zero step leaves a system and a Particle in the same state.
+#include <doctest/doctest.h>
+
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include <pointmass/pointmass.hpp>
+
+using namespace pointmass;
+
+namespace {
+
+using Sparks = ParticleSystem<float>;
+using Forced = ParticleSystem<float, damping::PerSecond, position::Euler,
+                              features::ForceAccumulator>;
+using Aging = ParticleSystem<float, damping::None, position::Euler, features::Lifetime>;
+
+template <class System>
+System three_particles() {
+  System system;
+  for (int i = 0; i < 3; ++i) {
+    system.spawn({float(i), 0, 0}, {0, float(i), 0});
+  }
+  return system;
+}
+
+template <class System>
+bool same_particles(const System& a, const System& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!(a.position(i) == b.position(i)) || !(a.velocity(i) == b.velocity(i))) return false;
+  }
+  return true;
+}
+
+// The message of the std::invalid_argument that f throws ("" if none).
+template <class F>
+std::string invalid_argument_of(F f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& error) {
+    return error.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("reserve refuses a capacity whose size arithmetic would overflow, and changes nothing") {
+  Sparks system = three_particles<Sparks>();
+  const std::size_t capacity = system.capacity();
+  const Sparks before = system;
+  for (std::size_t huge : {std::numeric_limits<std::size_t>::max(),
+                           std::numeric_limits<std::size_t>::max() / 2,
+                           std::numeric_limits<std::size_t>::max() / 24 + 1,
+                           Sparks::max_size() + 1}) {
+    CAPTURE(huge);
+    CHECK_THROWS_AS(system.reserve(huge), std::length_error);
+    CHECK(system.capacity() == capacity);
+    CHECK(same_particles(system, before));
+  }
+  // The refusal names the function, the argument and its value.
+  try {
+    system.reserve(std::numeric_limits<std::size_t>::max());
+  } catch (const std::length_error& error) {
+    const std::string message = error.what();
+    CHECK(message.find("reserve") != std::string::npos);
+    CHECK(message.find("capacity") != std::string::npos);
+    CHECK(message.find(std::to_string(std::numeric_limits<std::size_t>::max())) !=
+          std::string::npos);
+  }
+  // Spawning afterwards still writes inside the block (AddressSanitizer would report it).
+  for (int i = 0; i < 100; ++i) system.spawn({1, 2, 3}, {4, 5, 6});
+  CHECK(system.size() == 103);
+  CHECK(system.position(0) == before.position(0));
+  CHECK(system.position(2) == before.position(2));
+  // max_size() times the bytes of the stored arrays fits in a ptrdiff_t.
+  CHECK(Sparks::max_size() <= std::size_t(PTRDIFF_MAX) / Sparks::storage_bytes_per_particle);
+}
+
+TEST_CASE("a copy's arrays() has the copy's size, so a step_particle loop over it steps all") {
+  const Sparks original = three_particles<Sparks>();
+  Sparks copy = original;
+  REQUIRE(copy.arrays().size == 3);
+  const auto parameters = copy.step_parameters(0.5f);
+  for (std::size_t i = 0; i < copy.arrays().size; ++i) {
+    Sparks::step_particle(copy.arrays(), i, parameters);
+  }
+  Sparks stepped = original;
+  stepped.step(0.5f);
+  CHECK(same_particles(copy, stepped));
+  Sparks empty_copy = Sparks{};
+  CHECK(empty_copy.arrays().size == 0);
+}
+
+TEST_CASE("index reads and writes beyond size() are reported, naming the index") {
+  Forced system = three_particles<Forced>();
+  const Forced before = system;
+  const std::string prefix = "argument 'index' = 3 must be < size()";
+  CHECK(invalid_argument_of([&] { (void)system.position(3); }).find(prefix) != std::string::npos);
+  CHECK(invalid_argument_of([&] { (void)system.velocity(3); }).find(prefix) != std::string::npos);
+  CHECK(invalid_argument_of([&] { (void)system.acceleration(3); }).find(prefix) !=
+        std::string::npos);
+  CHECK(invalid_argument_of([&] { (void)system.damping(3); }).find(prefix) != std::string::npos);
+  CHECK(invalid_argument_of([&] { (void)system.inverse_mass(3); }).find(prefix) !=
+        std::string::npos);
+  CHECK(invalid_argument_of([&] { system.add_force(3, {1, 1, 1}); }).find(prefix) !=
+        std::string::npos);
+  CHECK(invalid_argument_of([&] { system.kill(3); }).find(prefix) != std::string::npos);
+  CHECK(same_particles(system, before));
+  CHECK(system.force_accumulator(2) == Vector3<float>{});
+}
+
+TEST_CASE("step_range and step_range_backward check their range against arrays().size") {
+  Sparks system = three_particles<Sparks>();
+  const Sparks before = system;
+  const auto parameters = system.step_parameters(0.1f);
+  CHECK(invalid_argument_of([&] { Sparks::step_range(system.arrays(), 0, 4, parameters); })
+            .find("argument 'end' = 4 must be <= size()") != std::string::npos);
+  CHECK(invalid_argument_of([&] { Sparks::step_range(system.arrays(), 2, 1, parameters); })
+            .find("argument 'begin' = 2 must be <= end") != std::string::npos);
+  CHECK(invalid_argument_of([&] {
+          Sparks::step_range_backward(system.arrays(), 2, 1, parameters);
+        }).find("argument 'begin' = 2 must be <= end") != std::string::npos);
+  CHECK(invalid_argument_of([&] {
+          Sparks::step_range_backward(system.arrays(), 0, 17, parameters);
+        }).find("argument 'end' = 17 must be <= size()") != std::string::npos);
+  CHECK(same_particles(system, before));
+  // A valid empty range is fine and changes nothing.
+  Sparks::step_range(system.arrays(), 1, 1, parameters);
+  CHECK(same_particles(system, before));
+}
+
+TEST_CASE("an infinite lifetime never expires, even when the age overflows") {
+  Aging system;
+  system.spawn({}, {});
+  system.spawn({}, {});
+  system.set_lifetime(1, std::numeric_limits<float>::max());
+  for (int step = 0; step < 4; ++step) system.step(std::numeric_limits<float>::max());
+  REQUIRE(system.size() == 1);  // the finite one expired, the infinite one did not
+  CHECK(system.lifetime(0) == std::numeric_limits<float>::infinity());
+  CHECK(system.age(0) == std::numeric_limits<float>::infinity());
+}
+
+TEST_CASE("a zero step leaves an immovable particle's force in a Particle as in a system") {
+  Particle<float> particle;
+  particle.set_inverse_mass(0.0f);
+  particle.add_force({1, 2, 3});
+  Forced system;
+  system.spawn(particle);
+  particle.integrate(0.0f);
+  system.step(0.0f);
+  CHECK(particle.force_accumulator() == Vector3<float>{1, 2, 3});
+  CHECK(system.force_accumulator(0) == particle.force_accumulator());
+  particle.integrate(0.5f);
+  system.step(0.5f);
+  CHECK(particle.force_accumulator() == Vector3<float>{});
+  CHECK(system.force_accumulator(0) == particle.force_accumulator());
+  CHECK(system.position(0) == particle.position());
+}
+
+TEST_CASE_TEMPLATE("a finite mass is accepted only when mass() stays finite", R, float, double) {
+  Particle<R> particle;
+  const R huge = std::numeric_limits<R>::max();
+  const std::string message = invalid_argument_of([&] { particle.set_mass(huge); });
+  CHECK(message.find("argument 'mass'") != std::string::npos);
+  CHECK(particle.mass() == R(1));  // unchanged
+  // The largest accepted mass has a finite mass() whenever has_finite_mass() says so.
+  const R largest = R(1) / std::numeric_limits<R>::min();
+  particle.set_mass(largest);
+  CHECK(particle.has_finite_mass());
+  CHECK(real_isfinite(particle.mass()));
+  // An inverse mass so small that its mass would overflow is refused too; 0 is immovable.
+  CHECK(invalid_argument_of([&] { particle.set_inverse_mass(std::numeric_limits<R>::denorm_min()); })
+            .find("argument 'inverse_mass'") != std::string::npos);
+  particle.set_inverse_mass(R(0));
+  CHECK_FALSE(particle.has_finite_mass());
+  ParticleSystem<R, damping::PerSecond, position::Euler, features::ForceAccumulator> system;
+  system.spawn({}, {});
+  CHECK(invalid_argument_of([&] { system.set_mass(0, huge); }).find("argument 'mass'") !=
+        std::string::npos);
+  CHECK(system.inverse_mass(0) == R(1));
+}
