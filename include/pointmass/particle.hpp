@@ -163,7 +163,7 @@ class BasicParticle {
       force_accumulator_ = {};
       return;
     }
-    if (t == real(0)) return;
+    if (real_equal(t, real(0))) return;
 
     const Vector3<acceleration_type> resulting_acceleration =
         typed<acceleration_type>(acceleration_) +
