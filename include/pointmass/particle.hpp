@@ -40,9 +40,12 @@ POINTMASS_HD constexpr void advance(Position& p, Velocity& v, const Acceleration
   v = v1;
 }
 
-template <QuantitySet Q, DampingPolicy D = damping::PerSecond,
-          PositionPolicyFor<D> P = position::Euler>
+/// P is checked in the body (detail::check_policy_pair), so that an invalid pair of policies
+/// is one sentence naming the pairs that work.
+template <QuantitySet Q, DampingPolicy D = damping::PerSecond, class P = position::Euler>
 class BasicParticle {
+  static_assert(detail::check_policy_pair<D, P>());
+
  public:
   using quantities = Q;
   using real = typename Q::real;
@@ -125,14 +128,20 @@ class BasicParticle {
     inverse_mass_ = im;
   }
   /// 0 <= damping <= 1: the fraction of velocity kept per second (per frame for PerFrame).
-  constexpr void set_damping(real damping)
-    requires stores_damping
-  {
-    if (real_isnan(damping) || damping < real(0) || damping > real(1)) {
-      detail::report_scalar("set_damping", "damping", "in [0, 1]", damping);
-      return;
+  /// Only for a policy that stores a damping value (stores_damping); generic code tests
+  /// stores_damping before calling it.
+  constexpr void set_damping(real damping) {
+    static_assert(stores_damping,
+                  "set_damping: this damping policy has no damping value to set (damping::None "
+                  "damps nothing); choose damping::PerSecond, PerFrame, AccelerateThenDamp or "
+                  "Exact to damp");
+    if constexpr (stores_damping) {  // else the static_assert has said why
+      if (real_isnan(damping) || damping < real(0) || damping > real(1)) {
+        detail::report_scalar("set_damping", "damping", "in [0, 1]", damping);
+        return;
+      }
+      damping_ = damping_state(damping);
     }
-    damping_ = damping_state(damping);
   }
 
   // --- forces and integration --------------------------------------------------------------
@@ -170,7 +179,9 @@ class BasicParticle {
         typed<force_type>(force_accumulator_) * Q::template make<inverse_mass_type>(inverse_mass_);
     auto p = typed<length_type>(position_);
     auto v = typed<velocity_type>(velocity_);
-    advance<D, P>(p, v, resulting_acceleration, duration, D::factors(damping_, duration));
+    if constexpr (PositionPolicyFor<P, D>) {  // else the static_assert above has said why
+      advance<D, P>(p, v, resulting_acceleration, duration, D::factors(damping_, duration));
+    }
     position_ = raw(p);
     velocity_ = raw(v);
     force_accumulator_ = {};
@@ -201,7 +212,7 @@ class BasicParticle {
 };
 
 /// The particle over plain numbers (SI units by convention: metres, seconds, kilograms).
-template <Real R, DampingPolicy D = damping::PerSecond, PositionPolicyFor<D> P = position::Euler>
+template <Real R, DampingPolicy D = damping::PerSecond, class P = position::Euler>
 using Particle = BasicParticle<PlainQuantities<R>, D, P>;
 
 }  // namespace pointmass
