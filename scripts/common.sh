@@ -3,7 +3,8 @@
 
 # The Debian packages a full build and test run needs.
 POINTMASS_PACKAGES=(cmake ninja-build g++ clang libclang-rt-14-dev libboost-dev doctest-dev
-                    libbenchmark-dev libtbb-dev gnuplot-nox doxygen pkg-config)
+                    libbenchmark-dev libtbb-dev gnuplot-nox doxygen pkg-config
+                    libglm-dev libeigen3-dev)  # the last two: test-only (tests/packaging/user_vectors)
 
 # Installs those of the named Debian packages that are missing (apt-get update first, once).
 ensure_packages() {

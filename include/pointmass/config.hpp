@@ -88,7 +88,8 @@ inline std::string describe(const ContractViolation& violation) {
 }
 
 /// The default handler: throw std::invalid_argument, or print and abort without exceptions.
-inline void default_contract_handler(const ContractViolation& violation) {
+/// Either way it never returns.
+[[noreturn]] inline void default_contract_handler(const ContractViolation& violation) {
 #if POINTMASS_HAS_EXCEPTIONS
   throw std::invalid_argument(describe(violation));
 #else

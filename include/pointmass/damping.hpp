@@ -214,7 +214,8 @@ struct Exact {
    public:
     constexpr State() noexcept = default;
     POINTMASS_HD explicit State(R d) noexcept
-        : value_(d), log_value_(d == R(1) ? R(0) : (d > R(0) ? real_log(d) : -real_infinity<R>)) {}
+        : value_(d),
+          log_value_(real_equal(d, R(1)) ? R(0) : (d > R(0) ? real_log(d) : -real_infinity<R>)) {}
     POINTMASS_HD constexpr R value() const noexcept { return value_; }
     /// k = ln d, the damping rate per second (<= 0; -infinity for d = 0).
     POINTMASS_HD constexpr R log_value() const noexcept { return log_value_; }
@@ -238,9 +239,9 @@ struct Exact {
     const R seconds = in_seconds(t);
     // x = k t: -infinity when d = 0; zero when d = 1, when t = 0, or when d is just below 1
     // and the step so short that the product underflows: then nothing is taken away.
-    const R x = seconds == R(0) ? R(0) : state.log_value() * seconds;
-    if (x == R(0)) return {R(1), R(1), R(0.5)};
-    if (x == -real_infinity<R>) return {R(0), R(0), R(0)};
+    const R x = real_equal(seconds, R(0)) ? R(0) : state.log_value() * seconds;
+    if (real_equal(x, R(0))) return {R(1), R(1), R(0.5)};
+    if (real_equal(x, -real_infinity<R>)) return {R(0), R(0), R(0)};
     const R kept_minus_one = real_expm1(x);
     const R phi1 = kept_minus_one / x;
     const R phi2 = real_abs(x) < R(0.25) ? detail::phi_series<2>(x) : (phi1 - R(1)) / x;

@@ -42,9 +42,12 @@ POINTMASS_HD constexpr void advance(Position& p, Velocity& v, const Acceleration
   v = v1;
 }
 
-template <QuantitySet Q, DampingPolicy D = damping::PerSecond,
-          PositionPolicyFor<D> P = position::Euler>
+/// P is checked in the body (detail::check_policy_pair), so that an invalid pair of policies
+/// is one sentence naming the pairs that work.
+template <QuantitySet Q, DampingPolicy D = damping::PerSecond, class P = position::Euler>
 class BasicParticle {
+  static_assert(detail::check_policy_pair<D, P>());
+
  public:
   using quantities = Q;
   using real = typename Q::real;
@@ -119,10 +122,16 @@ class BasicParticle {
     if (detail::check_inverse_mass("set_inverse_mass", im)) inverse_mass_ = im;
   }
   /// 0 <= damping <= 1: the fraction of velocity kept per second (per frame for PerFrame).
-  constexpr void set_damping(real damping)
-    requires stores_damping
-  {
-    if (detail::check_damping("set_damping", damping)) damping_ = damping_state(damping);
+  /// Only for a policy that stores a damping value (stores_damping); generic code tests
+  /// stores_damping before calling it.
+  constexpr void set_damping(real damping) {
+    static_assert(stores_damping,
+                  "set_damping: this damping policy has no damping value to set (damping::None "
+                  "damps nothing); choose damping::PerSecond, PerFrame, AccelerateThenDamp or "
+                  "Exact to damp");
+    if constexpr (stores_damping) {  // else the static_assert has said why
+      if (detail::check_damping("set_damping", damping)) damping_ = damping_state(damping);
+    }
   }
 
   // --- forces and integration --------------------------------------------------------------
@@ -146,7 +155,7 @@ class BasicParticle {
 #if POINTMASS_HOST_CHECKS
     if (!detail::check_duration("integrate", t)) return;
 #endif
-    if (t == real(0)) return;          // nothing changes, the accumulated force waits
+    if (real_equal(t, real(0))) return;         // nothing changes, the accumulated force waits
     if (!(inverse_mass_ > real(0))) {  // immovable: forces cannot move it
       force_accumulator_ = {};
       return;
@@ -157,7 +166,9 @@ class BasicParticle {
         typed<force_type>(force_accumulator_) * Q::template make<inverse_mass_type>(inverse_mass_);
     auto p = typed<length_type>(position_);
     auto v = typed<velocity_type>(velocity_);
-    advance<D, P>(p, v, resulting_acceleration, duration, D::factors(damping_, duration));
+    if constexpr (PositionPolicyFor<P, D>) {  // else the static_assert above has said why
+      advance<D, P>(p, v, resulting_acceleration, duration, D::factors(damping_, duration));
+    }
     position_ = raw(p);
     velocity_ = raw(v);
     force_accumulator_ = {};
@@ -182,7 +193,7 @@ class BasicParticle {
 };
 
 /// The particle over plain numbers (SI units by convention: metres, seconds, kilograms).
-template <Real R, DampingPolicy D = damping::PerSecond, PositionPolicyFor<D> P = position::Euler>
+template <Real R, DampingPolicy D = damping::PerSecond, class P = position::Euler>
 using Particle = BasicParticle<PlainQuantities<R>, D, P>;
 
 }  // namespace pointmass

@@ -84,7 +84,7 @@
 
 namespace pointmass {
 
-template <Real R, DampingPolicy D = damping::PerSecond, PositionPolicyFor<D> P = position::Euler,
+template <Real R, DampingPolicy D = damping::PerSecond, class P = position::Euler,
           class... Features>
   requires(detail::is_feature_v<Features> && ...)
 class ParticleSystem
@@ -92,6 +92,8 @@ class ParticleSystem
   using Layout = detail::SystemLayout<R, D, Features...>;
   using Kernel = detail::SystemKernel<R, D, P, Layout>;
   using Block = detail::SoaBlock<Layout>;
+  // P is checked here, with one sentence, rather than as a constraint (see position.hpp).
+  static_assert(detail::check_policy_pair<D, P>());
 
  public:
   using real = R;
@@ -448,12 +450,14 @@ class ParticleSystem
   /// whose lifetime is over. A negative, NaN or infinite duration is a contract violation,
   /// checked when POINTMASS_CHECKS is on; zero changes nothing. Allocates nothing.
   void step(R duration) {
-    if (!begin_step(duration)) return;
-    const StepParameters parameters = step_parameters(duration);
-    (backward_ ? Kernel::step_range_backward : Kernel::step_range)(arrays(), 0, size(),
-                                                                   parameters);
-    backward_ = !backward_ && Kernel::alternates(size());
-    finish_step();
+    if constexpr (PositionPolicyFor<P, D>) {  // else the static_assert above has said why
+      if (!begin_step(duration)) return;
+      const StepParameters parameters = step_parameters(duration);
+      (backward_ ? Kernel::step_range_backward : Kernel::step_range)(arrays(), 0, size(),
+                                                                     parameters);
+      backward_ = !backward_ && Kernel::alternates(size());
+      finish_step();
+    }
   }
 
   /// True when the next `step` walks the particles backwards (see alternates). A copy
@@ -465,7 +469,7 @@ class ParticleSystem
 #if POINTMASS_HOST_CHECKS
     if (!detail::check_duration("step", duration)) return false;
 #endif
-    return duration != R(0) && size() != 0;
+    return !real_equal(duration, R(0)) && size() != 0;
   }
 
   /// After the particles have stepped: removes those whose age reached their (finite)

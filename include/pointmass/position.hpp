@@ -159,4 +159,31 @@ concept PositionPolicyFor =
       { P::position(vd, vd, vd, vd, td, fd) } -> std::same_as<Vector3<double>>;
     };
 
+namespace detail {
+
+/// Checks the pair (D, P) with a one-sentence error instead of a page of unmet constraints.
+/// A class over a damping policy D and a position policy P takes P unconstrained and puts
+///   static_assert(detail::check_policy_pair<D, P>());
+/// in its body (and steps only `if constexpr (PositionPolicyFor<P, D>)`, so that nothing
+/// follows the sentence); the function is true for a valid pair and fails to compile otherwise.
+template <class D, class P>
+constexpr bool check_policy_pair() {
+  // A plain bool, so that the compiler prints the sentence and not the unmet constraints.
+  constexpr bool fits = PositionPolicyFor<P, D>;
+  if constexpr (std::is_same_v<P, position::Exact>) {
+    static_assert(fits,
+                  "position::Exact works only with damping::Exact or damping::None; with "
+                  "damping::PerSecond, PerFrame or AccelerateThenDamp choose position::Euler, "
+                  "Kinematic or SemiImplicit, which work with every damping policy");
+  } else {
+    static_assert(fits,
+                  "this position policy does not fit this damping policy: it needs a static "
+                  "position(p0, v0, v1, a, t, factors) that takes the damping policy's factors "
+                  "and returns the position's type, for float and double (see position.hpp)");
+  }
+  return true;  // a failed pair has already stopped at the static_assert above
+}
+
+}  // namespace detail
+
 }  // namespace pointmass

@@ -79,6 +79,22 @@ POINTMASS_HD constexpr bool real_isfinite(R x) noexcept {
   }
 }
 
+/// x == y, exactly. The library compares floating-point values for equality only where it
+/// means an exact value: 0, 1 and infinity, cases a step treats apart (a tolerance there would
+/// be wrong). The one comparison is here, with -Wfloat-equal silenced for that reason, so that
+/// the headers build clean for a consumer compiling with -Wfloat-equal -Werror.
+template <Real R>
+POINTMASS_HD constexpr bool real_equal(R x, R y) noexcept {
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wfloat-equal"
+#endif
+  return x == y;
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+}
+
 template <Real R>
 POINTMASS_HD constexpr R real_abs(R x) noexcept {
   if constexpr (std::same_as<R, float>) return __builtin_fabsf(x);
@@ -98,7 +114,7 @@ POINTMASS_HD inline R real_pow(R base, R exponent) noexcept {
 template <Real R>
 POINTMASS_HD constexpr R real_sqrt(R x) noexcept {
   if (std::is_constant_evaluated()) {
-    if (!(x > R(0)) || !real_isfinite(x)) return x == R(0) || x > R(0) ? x : R(0) / R(0);
+    if (!(x > R(0)) || !real_isfinite(x)) return real_equal(x, R(0)) || x > R(0) ? x : R(0) / R(0);
     R root = x > R(1) ? x : R(1);
     for (;;) {
       const R next = (root + x / root) / R(2);

@@ -51,6 +51,7 @@
 #include <boost/units/systems/si/velocity.hpp>
 
 #include "damping.hpp"
+#include "gravity.hpp"
 #include "particle.hpp"
 #include "position.hpp"
 #include "quantities.hpp"
@@ -78,6 +79,15 @@ template <Real R>
 using inverse_mass = bu::quantity<inverse_kilogram_unit, R>;
 template <Real R>
 using force = bu::quantity<bu::si::force, R>;
+
+/// The acceleration of gravity g pointing down (-Y), as a quantity: (0, -g, 0) m/s^2, by
+/// default the Earth's (pointmass::gravity as SI quantities).
+///   particle.set_acceleration(pointmass::units::gravity<double>());
+template <Real R>
+constexpr Vector3<acceleration<R>> gravity(
+    acceleration<R> g = acceleration<R>::from_value(earth_gravity<R>)) noexcept {
+  return {acceleration<R>::from_value(R(0)), -g, acceleration<R>::from_value(R(0))};
+}
 
 /// The QuantitySet of Boost.Units SI quantities of R.
 template <Real R>
@@ -129,6 +139,9 @@ inline constexpr bool same_unit_v =
 template <class Given, class Expected>
 inline constexpr bool same_real_v =
     std::is_same_v<typename QuantityParts<Given>::real, typename QuantityParts<Expected>::real>;
+/// False, but only once T is known: for a static_assert in a function that must fail when used.
+template <class T>
+inline constexpr bool always_false_v = false;
 
 }  // namespace detail
 
@@ -147,7 +160,7 @@ inline constexpr bool same_real_v =
 /// A particle whose every input and output is an SI quantity of R (see the file comment).
 /// BasicParticle over SiQuantities<R>, plus one overload per setter that turns a wrong
 /// argument type into a one-line error message.
-template <Real R, DampingPolicy D = damping::PerSecond, PositionPolicyFor<D> P = position::Euler>
+template <Real R, DampingPolicy D = damping::PerSecond, class P = position::Euler>
 class Particle : public BasicParticle<SiQuantities<R>, D, P> {
   using Base = BasicParticle<SiQuantities<R>, D, P>;
 
@@ -169,6 +182,30 @@ class Particle : public BasicParticle<SiQuantities<R>, D, P> {
   using Base::set_mass;
   using Base::set_position;
   using Base::set_velocity;
+
+  // Plain numbers, as a braced list `{0.0, 1.5, 0.0}` or a Vector3 of R (pointmass::gravity,
+  // a converted glm or Eigen vector), have no unit: each of these says how to give one.
+  void set_position(const Vector3<R>&) {
+    static_assert(detail::always_false_v<R>,
+                  "set_position: plain numbers have no unit; give metres, as in "
+                  "pointmass::Vector3<double>{0, 1.5, 0} * si::meters");
+  }
+  void set_velocity(const Vector3<R>&) {
+    static_assert(detail::always_false_v<R>,
+                  "set_velocity: plain numbers have no unit; give metres per second, as in "
+                  "pointmass::Vector3<double>{0, 30, 40} * si::meters_per_second");
+  }
+  void set_acceleration(const Vector3<R>&) {
+    static_assert(detail::always_false_v<R>,
+                  "set_acceleration: plain numbers have no unit; give metres per second squared, "
+                  "as in pointmass::units::gravity<double>() or "
+                  "pointmass::Vector3<double>{0, -20, 0} * si::meters_per_second_squared");
+  }
+  void add_force(const Vector3<R>&) {
+    static_assert(detail::always_false_v<R>,
+                  "add_force: plain numbers have no unit; give newtons, as in "
+                  "pointmass::Vector3<double>{5, 0, 0} * si::newtons");
+  }
 
   // The overloads below are chosen only for an argument of the wrong type; each fails with
   // a static_assert naming what was expected.

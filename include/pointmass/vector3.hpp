@@ -9,6 +9,7 @@
 // reference engine's `%` operator is the cross product there; here it is spelled `cross`).
 #pragma once
 
+#include <limits>
 #include <type_traits>
 
 #include "config.hpp"
@@ -17,12 +18,133 @@
 namespace pointmass {
 
 template <class T>
+struct Vector3;
+
+// --- the user's own vector types ---------------------------------------------------------------
+//
+// A game already has a vector type (glm::vec3, Eigen::Vector3f, its own struct). VectorTraits<V>
+// says how to read x, y and z from a V and how to make a V; with it, a V converts to a Vector3
+// and a Vector3 to a V, implicitly when nothing is lost (float into a Vector3<float> or a
+// Vector3<double>), explicitly (static_cast) when the conversion narrows (double into
+// Vector3<float>). Each conversion copies three numbers (constexpr, noexcept).
+//
+// A type with public x, y and z data members (glm, most engines' own structs) needs nothing:
+//   particle.set_position(glm::vec3(0, 1.5f, 0));   glm::vec3 p = particle.position();
+// For any other type, specialise VectorTraits, as for Eigen's operator() access:
+//   template <> struct pointmass::VectorTraits<Eigen::Vector3f> {
+//     using value_type = float;
+//     static float x(const Eigen::Vector3f& v) { return v(0); }   // y: v(1), z: v(2)
+//     static Eigen::Vector3f make(float x, float y, float z) { return {x, y, z}; }
+//   };
+// (make is optional: without it, the type converts into a Vector3 only.)
+
+/// How to read (x, y, z, value_type) and make (make) a user's vector type V. Empty: V is not a
+/// vector. Specialise it for your type; types with x, y and z members have it already.
+template <class V>
+struct VectorTraits {};
+
+namespace detail {
+
+template <class V>
+concept HasXyzMembers = requires(const V& v) {
+  v.x;
+  v.y;
+  v.z;
+  requires std::is_same_v<std::remove_cvref_t<decltype(v.x)>, std::remove_cvref_t<decltype(v.y)>>;
+  requires std::is_same_v<std::remove_cvref_t<decltype(v.x)>, std::remove_cvref_t<decltype(v.z)>>;
+};
+
+template <class T>
+inline constexpr bool is_vector3 = false;
+template <class T>
+inline constexpr bool is_vector3<Vector3<T>> = true;
+
+}  // namespace detail
+
+/// The traits of a type with x, y and z data members of one type (glm::vec3, a user's struct).
+template <class V>
+  requires detail::HasXyzMembers<V> && (!detail::is_vector3<V>)
+struct VectorTraits<V> {
+  using value_type = std::remove_cvref_t<decltype(std::declval<const V&>().x)>;
+  POINTMASS_HD static constexpr value_type x(const V& v) noexcept { return v.x; }
+  POINTMASS_HD static constexpr value_type y(const V& v) noexcept { return v.y; }
+  POINTMASS_HD static constexpr value_type z(const V& v) noexcept { return v.z; }
+  POINTMASS_HD static constexpr V make(value_type x, value_type y, value_type z)
+    requires requires { V{x, y, z}; }
+  {
+    return V{x, y, z};
+  }
+};
+
+namespace detail {
+
+/// V is a user's vector type whose numbers convert to T.
+template <class V, class T>
+concept UserVectorOf = !is_vector3<std::remove_cvref_t<V>> && requires(const V& v) {
+  typename VectorTraits<V>::value_type;
+  { VectorTraits<V>::x(v) } -> std::convertible_to<typename VectorTraits<V>::value_type>;
+  { VectorTraits<V>::y(v) } -> std::convertible_to<typename VectorTraits<V>::value_type>;
+  { VectorTraits<V>::z(v) } -> std::convertible_to<typename VectorTraits<V>::value_type>;
+  requires std::is_constructible_v<T, typename VectorTraits<V>::value_type>;
+};
+
+/// ... and V can be made from three numbers converted from T.
+template <class V, class T>
+concept MakeableUserVectorOf = !is_vector3<std::remove_cvref_t<V>> && requires(const T& t) {
+  typename VectorTraits<V>::value_type;
+  requires std::is_constructible_v<typename VectorTraits<V>::value_type, T>;
+  {
+    VectorTraits<V>::make(typename VectorTraits<V>::value_type(t),
+                          typename VectorTraits<V>::value_type(t),
+                          typename VectorTraits<V>::value_type(t))
+  } -> std::same_as<V>;
+};
+
+/// Every From converts to To without loss: the same type, or floating-point types where To has
+/// at least From's precision and range (float to double; not double to float, not int to float).
+template <class From, class To>
+inline constexpr bool converts_exactly_v =
+    std::is_same_v<From, To> ||
+    (std::is_floating_point_v<From> && std::is_floating_point_v<To> &&
+     std::numeric_limits<To>::digits >= std::numeric_limits<From>::digits &&
+     std::numeric_limits<To>::max_exponent >= std::numeric_limits<From>::max_exponent);
+
+}  // namespace detail
+
+// --- Vector3 ----------------------------------------------------------------------------------
+
+template <class T>
 struct Vector3 {
   using value_type = T;
 
   T x{};
   T y{};
   T z{};
+
+  /// The zero vector.
+  constexpr Vector3() = default;
+  POINTMASS_HD constexpr Vector3(T x_value, T y_value, T z_value) noexcept
+      : x(x_value), y(y_value), z(z_value) {}
+
+  // --- to and from the user's vector types (VectorTraits, above) -------------------------------
+  /// From a user's vector: implicit when every number converts exactly, explicit otherwise.
+  template <class V>
+    requires detail::UserVectorOf<V, T>
+  POINTMASS_HD constexpr explicit(
+      !detail::converts_exactly_v<typename VectorTraits<V>::value_type, T>)
+      Vector3(const V& v) noexcept
+      : x(static_cast<T>(VectorTraits<V>::x(v))),
+        y(static_cast<T>(VectorTraits<V>::y(v))),
+        z(static_cast<T>(VectorTraits<V>::z(v))) {}
+  /// To a user's vector: implicit when every number converts exactly, explicit otherwise.
+  template <class V>
+    requires detail::MakeableUserVectorOf<V, T>
+  POINTMASS_HD constexpr explicit(
+      !detail::converts_exactly_v<T, typename VectorTraits<V>::value_type>) operator V() const {
+    using U = typename VectorTraits<V>::value_type;
+    return VectorTraits<V>::make(static_cast<U>(x), static_cast<U>(y), static_cast<U>(z));
+  }
+  // --- end of the user's vector types ----------------------------------------------------------
 
   POINTMASS_HD constexpr Vector3& operator+=(const Vector3& other) noexcept {
     x += other.x;

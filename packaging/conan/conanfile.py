@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 """Conan 2 recipe for pointmass, a header-only C++20 library.
 
 Build from a checkout (from the repository's root):
@@ -16,6 +17,7 @@ required_conan_version = ">=2.0"
 
 class PointmassConan(ConanFile):
     name = "pointmass"
+    license = "BSL-1.0"
     description = ("Header-only C++20 Newtonian point-mass (particle) integration with damping "
                    "and position policies, a structure-of-arrays batch, and optional "
                    "Boost.Units quantities.")
@@ -28,7 +30,8 @@ class PointmassConan(ConanFile):
 
     def export_sources(self):
         root = os.path.join(self.recipe_folder, "..", "..")
-        for pattern in ("CMakeLists.txt", "cmake/*", "include/*", "LICENSE*", "README.md"):
+        for pattern in ("CMakeLists.txt", "cmake/*", "include/*", "LICENSE_1_0.txt",
+                        "README.md"):
             copy(self, pattern, src=root, dst=self.export_sources_folder)
 
     def layout(self):
@@ -49,6 +52,9 @@ class PointmassConan(ConanFile):
         toolchain.cache_variables["POINTMASS_BUILD_TESTS"] = False
         toolchain.cache_variables["POINTMASS_BUILD_EXAMPLES"] = False
         toolchain.cache_variables["POINTMASS_BUILD_BENCHMARKS"] = False
+        toolchain.cache_variables["POINTMASS_INSTALL"] = True
+        if not self.options.units:  # no pointmass::units, whether or not Boost is installed
+            toolchain.cache_variables["CMAKE_DISABLE_FIND_PACKAGE_Boost"] = True
         toolchain.generate()
 
     def build(self):
@@ -58,7 +64,7 @@ class PointmassConan(ConanFile):
         cmake = CMake(self)
         cmake.configure()
         cmake.install()
-        copy(self, "LICENSE*", src=self.source_folder,
+        copy(self, "LICENSE_1_0.txt", src=self.source_folder,
              dst=os.path.join(self.package_folder, "licenses"))
 
     def package_info(self):

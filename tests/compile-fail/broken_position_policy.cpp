@@ -1,7 +1,6 @@
 // A position policy that returns a number instead of a position does not satisfy
-// PositionPolicyFor.
-// expected-error: (PositionPolicyFor<P, D>)
-// expected-error: 'PositionPolicyFor<ReturnsANumber
+// PositionPolicyFor: one sentence says what a position policy needs.
+// expected-error: this position policy does not fit this damping policy: it needs a static position(p0, v0, v1, a, t, factors)
 #include <pointmass/particle.hpp>
 
 struct ReturnsANumber {

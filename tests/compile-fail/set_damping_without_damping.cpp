@@ -1,5 +1,5 @@
-// damping::None stores no damping value, so its particle has no set_damping.
-// expected-error: stores_damping
+// damping::None stores no damping value: set_damping says so, and names the policies that do.
+// expected-error: set_damping: this damping policy has no damping value to set
 #include <pointmass/particle.hpp>
 
 int main() {

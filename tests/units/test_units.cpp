@@ -171,8 +171,10 @@ TEST_CASE_TEMPLATE("the SI particle costs no storage and stays trivially copyabl
                 sizeof(pm::Particle<R, Exact, pm::position::Exact>));
   static_assert(std::is_trivially_copyable_v<pm::units::Particle<R, PerSecond>>);
   static_assert(std::is_trivially_copyable_v<pm::units::Particle<R, None>>);
-  // A particle without a damping value has no set_damping, with or without units.
-  static_assert(!requires(pm::units::Particle<R, None> p) { p.set_damping(R(1)); });
+  // A particle without a damping value says so (stores_damping), with or without units; its
+  // set_damping fails to compile with a sentence (tests/compile-fail/set_damping_without_damping).
+  static_assert(!pm::units::Particle<R, None>::stores_damping);
+  static_assert(pm::units::Particle<R, PerSecond>::stores_damping);
   static_assert(requires(pm::units::Particle<R, PerSecond> p) { p.set_damping(R(1)); });
   CHECK(sizeof(pm::units::Particle<R, None>) < sizeof(pm::units::Particle<R, PerSecond>));
 }

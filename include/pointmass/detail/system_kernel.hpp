@@ -49,7 +49,8 @@ namespace pointmass::detail {
 
 struct NoFactors {};
 
-template <Real R, DampingPolicy D, PositionPolicyFor<D> P, class Layout>
+// P is checked by ParticleSystem (detail::check_policy_pair), with one sentence.
+template <Real R, DampingPolicy D, class P, class Layout>
 class SystemKernel {
  public:
   using Arrays = typename Layout::Arrays;

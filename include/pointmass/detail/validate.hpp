@@ -51,7 +51,7 @@ template <Real R>
 constexpr bool check_mass(const char* function, R mass) {
   const R inverse = R(1) / mass;
   if (!real_isnan(mass) && mass > R(0) &&
-      (inverse == R(0) || (real_isfinite(inverse) && inverse >= std::numeric_limits<R>::min()))) {
+      (real_equal(inverse, R(0)) || (real_isfinite(inverse) && inverse >= std::numeric_limits<R>::min()))) {
     return true;
   }
   report_scalar(function, "mass", "> 0 and not NaN, with 1/mass finite and normal", mass);
@@ -61,7 +61,7 @@ constexpr bool check_mass(const char* function, R mass) {
 /// An inverse mass: 0 (immovable) or a finite normal number > 0.
 template <Real R>
 constexpr bool check_inverse_mass(const char* function, R inverse_mass) {
-  if (inverse_mass == R(0) ||
+  if (real_equal(inverse_mass, R(0)) ||
       (real_isfinite(inverse_mass) && inverse_mass >= std::numeric_limits<R>::min())) {
     return true;
   }
