@@ -128,13 +128,15 @@ class StiffSpringParameters {
 /// A stiff damped spring from a body to a fixed anchor, stepped in closed form instead of
 /// integrated: call `advance(body, t)` in place of `body.integrate(t)`. For a body of mass m,
 /// x = p - anchor obeys m x'' = -k x - c x' + m a, where a is the body's own acceleration plus
-/// its accumulated forces over m, held constant over the step. The step is Strang splitting:
-/// v += a t / 2, then (x, v) move exactly along the damped oscillator for t, then
-/// v += a t / 2. So
-///   * with the spring the only force (a = 0), the position and velocity after every step are
-///     the closed form's, at any step: no stability limit, no period error;
-///   * with other forces, the error is second order in t and the step stays stable at any t
-///     (the oscillator part is exact, the kicks are bounded).
+/// its accumulated forces over m, held constant over the step. With w0^2 = k / m:
+///   * w0 t >= 1 (the spring is stiff for this step): exact for constant a. The body
+///     oscillates about the shifted rest point anchor + a / w0^2, in closed form.
+///   * w0 t < 1: Strang splitting, v += a t / 2, then (x, v) move exactly along the damped
+///     oscillator for t, then v += a t / 2: second order in t, never dividing by w0^2.
+/// So with the spring the only force (a = 0), the position and velocity after every step are
+/// the closed form's at any step: no stability limit, no period error; with gravity (constant
+/// a) they are exact at steps w0 t >= 1 and second-order accurate below; with forces that
+/// change during the step, second order.
 /// The body's damping policy is not applied (the spring's damping c is the damping); the
 /// accumulator is cleared, an immovable body does not move, a zero step changes nothing, as
 /// `integrate` does. A negative or non-finite duration is reported, as is a state beyond the
@@ -153,11 +155,20 @@ class StiffSpring : public StiffSpringParameters<R> {
       return;
     }
     if (duration == R(0)) return;
-    const Vector3<R> half_kick =
-        (body.acceleration() + body.force_accumulator() * inverse_mass) * (duration / R(2));
-    OscillatorState<R> s =
-        this->exact_state(body.position(), body.velocity() + half_kick, inverse_mass, duration);
-    s.velocity += half_kick;
+    const Vector3<R> a = body.acceleration() + body.force_accumulator() * inverse_mass;
+    const R w0_squared = this->k_ * inverse_mass;
+    OscillatorState<R> s;
+    if (w0_squared * duration * duration >= R(1)) {
+      const Vector3<R> rest = this->anchor_ + a / w0_squared;
+      s = damped_oscillator(w0_squared, this->c_ * inverse_mass / R(2), body.position() - rest,
+                            body.velocity(), duration);
+      s.position += rest;
+    } else {
+      const Vector3<R> half_kick = a * (duration / R(2));
+      s = this->exact_state(body.position(), body.velocity() + half_kick, inverse_mass,
+                            duration);
+      s.velocity += half_kick;
+    }
     if (!detail::check_state("StiffSpring::advance", s.position, s.velocity)) return;
     body.set_position(s.position);
     body.set_velocity(s.velocity);
@@ -186,9 +197,9 @@ inline constexpr R short_step = [] {
 /// (it does not converge as t shrinks) and a wrong amplitude. What it does right, unlike the
 /// reference engine's: no NaN when over-damped (sqrt(4 k - c^2) there), a force when
 /// critically damped. Stability of its step map: see docs/forces.md.
-/// For w0 t and gamma t below about the cube root of epsilon the force is the limit t -> 0,
-/// -k x - c v (the difference quotient would cancel); it never divides by t^2 or by
-/// inverse_mass t. Nothing on an immovable body, nothing for t = 0. Range: k |x| + c |v|
+/// For w0 t and gamma t below about the cube root of epsilon the force is its limit as
+/// t -> 0, -(k x + c v) / 2 (half the spring's force: that is its error, seen at small steps),
+/// since the difference quotient would cancel; it never divides by t^2 or by inverse_mass t. Nothing on an immovable body, nothing for t = 0. Range: k |x| + c |v|
 /// below the largest R, and exact_state's.
 template <Real R>
 class PositionOnlyStiffSpring : public StiffSpringParameters<R> {
@@ -203,7 +214,7 @@ class PositionOnlyStiffSpring : public StiffSpringParameters<R> {
     const Vector3<R> x = p - this->anchor_;
     if (real_sqrt(w0_squared) * duration < detail::short_step<R> &&
         gamma * duration < detail::short_step<R>) {
-      return -(x * this->k_ + v * this->c_);
+      return -(x * this->k_ + v * this->c_) / R(2);
     }
     const OscillatorState<R> s = damped_oscillator(w0_squared, gamma, x, v, duration);
     const Vector3<R> mean_acceleration = ((s.position - x) / duration - v) / duration;
