@@ -60,12 +60,18 @@ class ForceRegistry {
     return emplace<G>(particle, std::move(generator));
   }
 
-  /// Builds a generator G from `args` in the registry, to act on `particle`; returns it.
+  /// Builds a generator G from `args` (constructor arguments, or an aggregate's members) in the
+  /// registry, to act on `particle`; returns it.
   template <class G, class... Args>
   G& emplace(P& particle, Args&&... args) {
     static_assert(GeneratorFor<G, P>, "ForceRegistry::emplace: G needs a force(p, v, "
                                       "inverse_mass, t) or an update_force(particle, t) member");
-    auto owned = std::make_unique<G>(std::forward<Args>(args)...);
+    std::unique_ptr<G> owned;
+    if constexpr (std::is_constructible_v<G, Args&&...>) {
+      owned = std::make_unique<G>(std::forward<Args>(args)...);
+    } else {  // an aggregate, for compilers without C++20's parenthesised aggregate init
+      owned.reset(new G{std::forward<Args>(args)...});
+    }
     G& generator = *owned;
     insert<G>(particle, generator, std::move(owned));
     return generator;
@@ -116,7 +122,7 @@ class ForceRegistry {
 
   /// Removes every registration (after the pass, when called inside update_forces).
   void clear() noexcept {
-    std::apply([this](auto&... entries) { (mark_all(entries), ...); }, known_);
+    std::apply([&](auto&... entries) { (mark_all(entries), ...); }, known_);
     mark_all(erased_);
     compact_unless_updating();
   }
