@@ -7,6 +7,13 @@
 //
 // Products: `v * s` scales; `component_product(a, b)` multiplies element by element (the
 // reference engine's `%` operator is the cross product there; here it is spelled `cross`).
+//
+// `magnitude` and `normalized` work for every finite vector: when x^2 + y^2 + z^2 would
+// overflow (components from about 1e19 in float, 1e154 in double) or underflow and lose digits
+// (below about 1e-16 in float, 1e-146 in double) they divide by the largest component first.
+// Elsewhere they compute exactly what the plain formula computes, bit for bit. A magnitude
+// above the largest finite value (only possible beyond about 0.58 of it per component) is
+// infinity; a direction is always a unit vector.
 #pragma once
 
 #include <limits>
@@ -182,14 +189,11 @@ struct Vector3 {
     return *this;
   }
 
-  /// The zero vector stays zero (no division by zero, no NaN).
+  /// Makes this a unit vector in the same direction, for any finite non-zero vector (no
+  /// overflow or underflow in between). The zero vector stays zero (no division by zero, no
+  /// NaN); a vector with an infinite or NaN component is left as it is.
   POINTMASS_HD constexpr Vector3& normalize() noexcept
-    requires Real<T>
-  {
-    const T length = magnitude(*this);
-    if (length > T(0)) *this /= length;
-    return *this;
-  }
+    requires Real<T>;
 
   friend constexpr bool operator==(const Vector3&, const Vector3&) = default;
 };
@@ -264,12 +268,52 @@ POINTMASS_HD constexpr T square_magnitude(const Vector3<T>& v) noexcept {
   return dot(v, v);
 }
 
+namespace detail {
+
+/// Whether x^2 + y^2 + z^2 = `square` was formed without overflow and without an underflow
+/// that cost digits: at or above min / epsilon, a component whose square underflowed changes
+/// the sum by less than epsilon^2 of it.
 template <Real T>
-POINTMASS_HD constexpr T magnitude(const Vector3<T>& v) noexcept {
-  return real_sqrt(square_magnitude(v));
+POINTMASS_HD constexpr bool square_is_exact_enough(T square) noexcept {
+  return square >= std::numeric_limits<T>::min() / std::numeric_limits<T>::epsilon() &&
+         square <= std::numeric_limits<T>::max();
 }
 
-/// A unit vector in v's direction; the zero vector for the zero vector.
+/// The largest |component| (NaN if a component is NaN).
+template <Real T>
+POINTMASS_HD constexpr T largest_component(const Vector3<T>& v) noexcept {
+  const T x = real_abs(v.x), y = real_abs(v.y), z = real_abs(v.z);
+  if (real_isnan(x) || real_isnan(y) || real_isnan(z)) return x + y + z;
+  const T xy = x > y ? x : y;
+  return xy > z ? xy : z;
+}
+
+}  // namespace detail
+
+template <Real T>
+POINTMASS_HD constexpr T magnitude(const Vector3<T>& v) noexcept {
+  const T square = square_magnitude(v);
+  if (detail::square_is_exact_enough(square)) return real_sqrt(square);
+  // Scaled: |v| = s |v / s| with s the largest component, so nothing over- or underflows.
+  const T scale = detail::largest_component(v);
+  if (!(scale > T(0)) || !real_isfinite(scale)) return scale;  // zero, infinity or NaN
+  return real_sqrt(square_magnitude(v / scale)) * scale;
+}
+
+template <class T>
+POINTMASS_HD constexpr Vector3<T>& Vector3<T>::normalize() noexcept
+  requires Real<T>
+{
+  const T square = square_magnitude(*this);
+  if (detail::square_is_exact_enough(square)) return *this /= real_sqrt(square);
+  const T scale = detail::largest_component(*this);
+  if (!(scale > T(0)) || !real_isfinite(scale)) return *this;  // zero, infinity or NaN
+  *this /= scale;
+  return *this /= real_sqrt(square_magnitude(*this));
+}
+
+/// A unit vector in v's direction for any finite non-zero v; the zero vector for the zero
+/// vector.
 template <Real T>
 POINTMASS_HD constexpr Vector3<T> normalized(Vector3<T> v) noexcept {
   return v.normalize();

@@ -41,7 +41,7 @@ Particle<R> immovable_at(Vector3<R> p) {
 // The force one update_force call adds to a fresh particle.
 template <class G, class R>
 Vector3<R> force_on(const G& generator, Particle<R> particle, R dt = R(1) / R(60)) {
-  generator.update_force(particle, dt);
+  forces::update_force(generator, particle, dt);
   return particle.force_accumulator();
 }
 
@@ -91,8 +91,8 @@ TEST_CASE_TEMPLATE("spring between particles pulls them together, equal and oppo
   Particle<R> b = body_at<R>({R(0), R(4), R(0)});
   const forces::Spring<Particle<R>> on_a(b, R(3), R(1));
   const forces::Spring<Particle<R>> on_b(a, R(3), R(1));
-  on_a.update_force(a, R(0.1));
-  on_b.update_force(b, R(0.1));
+  forces::update_force(on_a, a, R(0.1));
+  forces::update_force(on_b, b, R(0.1));
   // Extension 3, stiffness 3: 9 N along the line.
   CHECK(close(a.force_accumulator(), Vector3<R>{R(0), R(9), R(0)}, R(2)));
   CHECK(close(b.force_accumulator(), Vector3<R>{R(0), R(-9), R(0)}, R(2)));
@@ -150,18 +150,18 @@ TEST_CASE_TEMPLATE("stiff spring: finite in every damping regime, nothing when i
                    float, double) {
   const Particle<R> body = body_at<R>({R(1), R(0), R(0)}, {R(0), R(1), R(0)}, R(1));
   // Regression: the reference engine's fake spring takes sqrt(4 k - c^2), NaN over-damped.
-  const forces::StiffSpring<R> over({}, R(1), R(10));
+  const forces::PositionOnlyStiffSpring<R> over({}, R(1), R(10));
   const Vector3<R> f_over = force_on(over, body, R(0.1));
   CHECK(pointmass::is_finite(f_over));
   CHECK(f_over.x < R(0));  // back towards the anchor
   CHECK(f_over.y < R(0));  // against the velocity
   // Regression: critically damped (c^2 = 4 k m), the reference engine adds no force at all.
-  const forces::StiffSpring<R> critical({}, R(4), R(4));
+  const forces::PositionOnlyStiffSpring<R> critical({}, R(4), R(4));
   const Vector3<R> f_critical = force_on(critical, body, R(0.1));
   CHECK(pointmass::is_finite(f_critical));
   CHECK(f_critical.x < R(0));
   // Huge steps and stiffness: still finite.
-  const forces::StiffSpring<R> stiff({}, R(1e6), R(0.01));
+  const forces::PositionOnlyStiffSpring<R> stiff({}, R(1e6), R(0.01));
   CHECK(pointmass::is_finite(force_on(stiff, body, R(100))));
   CHECK(pointmass::is_finite(force_on(over, body, R(1e4))));
   // Immovable, or a zero step: nothing.
@@ -202,7 +202,7 @@ TEST_CASE_TEMPLATE("bad parameters are rejected, naming the argument and its val
   const auto msg_k1 = violation_message([] { forces::Drag<R>(R(-0.5), R(0)); });
   CHECK(msg_k1.find("'k1' = -0.5") != std::string::npos);
   const auto msg_damping = violation_message(
-      [] { forces::StiffSpring<R>({}, R(1), std::numeric_limits<R>::quiet_NaN()); });
+      [] { forces::PositionOnlyStiffSpring<R>({}, R(1), std::numeric_limits<R>::quiet_NaN()); });
   CHECK(msg_damping.find("'damping' = nan") != std::string::npos);
   const auto msg_gravity = violation_message(
       [] { forces::Gravity<R>({R(0), std::numeric_limits<R>::infinity(), R(0)}); });
@@ -261,7 +261,7 @@ void check_batch_matches_particles(const G& generator) {
     particle.set_position(positions[i]);
     particle.set_velocity(velocities[i]);
     particle.set_inverse_mass(inverse_masses[i]);
-    generator.update_force(particle, dt);
+    forces::update_force(generator, particle, dt);
     CHECK(aos_forces[i] == particle.force_accumulator());
     CHECK(Vector3<R>{fx[i], fy[i], fz[i]} == particle.force_accumulator());
   }
@@ -276,7 +276,7 @@ TEST_CASE_TEMPLATE("a batch gets the same bits as particles, generator by genera
   check_batch_matches_particles<R>(forces::AnchoredSpring<R>({R(0), R(1), R(0)}, R(8), R(1)));
   check_batch_matches_particles<R>(forces::AnchoredBungee<R>({R(0), R(1), R(0)}, R(8), R(3)));
   check_batch_matches_particles<R>(forces::Buoyancy<R>(R(0.5), R(0.01), R(0)));
-  check_batch_matches_particles<R>(forces::StiffSpring<R>({R(0), R(1), R(0)}, R(50), R(3)));
+  check_batch_matches_particles<R>(forces::PositionOnlyStiffSpring<R>({R(0), R(1), R(0)}, R(50), R(3)));
 }
 
 TEST_CASE_TEMPLATE("links add equal and opposite spring forces in a batch", R, float, double) {

@@ -166,9 +166,9 @@ TEST_CASE_TEMPLATE("stiff spring: one step of any length ends at the exact posit
         body.set_mass(R(2));
         body.set_position({R(1), R(2.5), R(-1)});
         body.set_velocity({R(0), R(3), R(1)});
-        const forces::StiffSpring<R> spring(anchor, stiffness, friction);
+        const forces::PositionOnlyStiffSpring<R> spring(anchor, stiffness, friction);
         const auto exact = spring.exact_state(body.position(), body.velocity(), R(0.5), dt);
-        spring.update_force(body, dt);
+        forces::update_force(spring, body, dt);
         body.integrate(dt);
         CAPTURE(stiffness);
         CAPTURE(friction);
@@ -183,8 +183,8 @@ TEST_CASE_TEMPLATE("stiff spring: one step of any length ends at the exact posit
   // with g = c / (2 m) = 3, x0 = 1, v0 = 0.
   Particle<R, damping::None, position::SemiImplicit> body;
   body.set_position({R(1), R(0), R(0)});
-  const forces::StiffSpring<R> critical({}, R(9), R(6));
-  critical.update_force(body, R(0.25));
+  const forces::PositionOnlyStiffSpring<R> critical({}, R(9), R(6));
+  forces::update_force(critical, body, R(0.25));
   body.integrate(R(0.25));
   CHECK(close(body.position().x, R(1.75) * std::exp(R(-0.75)), R(16)));
 }
@@ -200,17 +200,17 @@ TEST_CASE_TEMPLATE("stiff spring stays bounded at steps where an integrated spri
     Particle<R, damping::None, position::SemiImplicit> closed_form;
     closed_form.set_position({R(1), R(0), R(0)});
     Particle<R, damping::None, position::SemiImplicit> integrated = closed_form;
-    const forces::StiffSpring<R> stiff({}, stiffness, friction);
+    const forces::PositionOnlyStiffSpring<R> stiff({}, stiffness, friction);
     const forces::AnchoredSpring<R> spring({}, stiffness, R(0));
     const forces::Drag<R> drag(friction, R(0));
     R largest = R(0);
     for (int i = 0; i < 300; ++i) {
-      stiff.update_force(closed_form, dt);
+      forces::update_force(stiff, closed_form, dt);
       closed_form.integrate(dt);
       largest = std::max(largest, pointmass::magnitude(closed_form.position()));
       if (i < 5) {
-        spring.update_force(integrated, dt);
-        drag.update_force(integrated, dt);
+        forces::update_force(spring, integrated, dt);
+        forces::update_force(drag, integrated, dt);
         integrated.integrate(dt);
       }
     }
@@ -251,8 +251,8 @@ std::vector<R> integrated_x(double stiffness, double friction, double dt, int st
   const forces::Drag<R> drag(R(friction), R(0));
   std::vector<R> xs{R(1)};
   for (int i = 0; i < steps; ++i) {
-    spring.update_force(body, R(dt));
-    drag.update_force(body, R(dt));
+    forces::update_force(spring, body, R(dt));
+    forces::update_force(drag, body, R(dt));
     body.integrate(R(dt));
     xs.push_back(body.position().x);
     if (energy != nullptr) {

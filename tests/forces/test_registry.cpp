@@ -104,9 +104,9 @@ TEST_CASE_TEMPLATE("known and type-erased registrations give the same forces", R
 
 TEST_CASE_TEMPLATE("registry over a whole simulation step: immovable particles stay put", R,
                    float, double) {
-  forces::ForceRegistry<Particle<R>, forces::Gravity<R>, forces::StiffSpring<R>> registry;
+  forces::ForceRegistry<Particle<R>, forces::Gravity<R>, forces::PositionOnlyStiffSpring<R>> registry;
   forces::Gravity<R> gravity({R(0), R(-10), R(0)});
-  forces::StiffSpring<R> spring({}, R(100), R(1));
+  forces::PositionOnlyStiffSpring<R> spring({}, R(100), R(1));
   Particle<R> wall = at<R>({R(0), R(1), R(0)});
   wall.set_inverse_mass(R(0));
   registry.add(wall, gravity);

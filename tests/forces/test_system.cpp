@@ -55,9 +55,9 @@ TEST_CASE_TEMPLATE("generators on a ParticleSystem match Particle, through apply
     forces::apply(buoyancy, soa, dt);
     forces::apply(gravity, soa, dt);
     for (Body& body : bodies) {
-      drag.update_force(body, dt);
-      buoyancy.update_force(body, dt);
-      gravity.update_force(body, dt);
+      forces::update_force(drag, body, dt);
+      forces::update_force(buoyancy, body, dt);
+      forces::update_force(gravity, body, dt);
     }
     for (std::size_t i = 0; i < 3; ++i) {
       CHECK(direct.force_accumulator(i) == bodies[i].force_accumulator());

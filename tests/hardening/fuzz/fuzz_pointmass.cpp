@@ -23,12 +23,19 @@
 //     which turns a -0 component into +0), through step() and through the step_particle path
 //     a GPU loop would run.
 //
+// Inputs starting with a byte >= 0xF0 drive the force generators instead (see "force
+// generators" below).
+//
 // A failed check prints what failed and calls abort(), which libFuzzer reports as a crash
 // with the input that caused it. Built with POINTMASS_ENABLE_CHECKS, so the hot-path
 // contracts (integrate's duration, add_force's vector) are checked in every build type.
 // Without libFuzzer, replay_main.cpp runs the same function over the corpus files.
+#include <pointmass/forces.hpp>
 #include <pointmass/particle.hpp>
 #include <pointmass/particle_system.hpp>
+
+#include <array>
+#include <span>
 
 #include <charconv>
 #include <cstddef>
@@ -623,6 +630,288 @@ void fuzz_system(Input& in) {
   }
 }
 
+// --- force generators -----------------------------------------------------------------------
+//
+// Inputs whose first byte is 0xF0 or more drive the force generators (even: float, odd:
+// double): every setter with any value (a rejected one is reported once, naming the setter
+// and argument, and changes nothing), then bodies with any finite state and inverse mass and
+// any duration through every generator. Invariants: a force from finite input is finite, or
+// forces::update_force reports it and adds nothing; inside the physical box below, it is
+// finite; StiffSpring::advance sets a finite state or reports and changes nothing;
+// apply_links with any links either adds every force or, rejected, changes nothing.
+
+/// Inside this box (each magnitude 0 or in [1/box, box]) every generator's force and every
+/// closed-form step is finite (docs/forces.md, "Ranges").
+template <class R>
+constexpr long double physical_box = std::is_same_v<R, float> ? 1e6L : 1e30L;
+
+template <class R>
+bool in_box(R x) {
+  const long double a = static_cast<long double>(x < R(0) ? -x : x);
+  return a == 0.0L || (a >= 1.0L / physical_box<R> && a <= physical_box<R>);
+}
+template <class R>
+bool in_box(const Vector3<R>& v) {
+  return in_box(v.x) && in_box(v.y) && in_box(v.z);
+}
+
+/// Calls `set(value)`; the setter must accept exactly the values `valid` says, and a rejected
+/// value must leave `state()` as it was.
+template <class T, class Set, class State>
+void fuzz_setter(const T& value, bool valid, const char* function, const char* argument, Set set,
+                 State state) {
+  const auto before = state();
+  set(value);
+  if (valid) {
+    expect_accepted(function);
+  } else {
+    expect_rejected(function, argument, value);
+    require(state() == before, "a rejected setter changed the generator:", function);
+  }
+}
+
+template <class R>
+struct Generators {
+  forces::Gravity<R> gravity;
+  forces::Drag<R> drag;
+  forces::AnchoredSpring<R> spring;
+  forces::AnchoredBungee<R> bungee;
+  forces::Buoyancy<R> buoyancy;
+  forces::StiffSpring<R> stiff;
+  forces::PositionOnlyStiffSpring<R> position_only;
+  forces::LinkSprings<R> links;
+};
+
+template <class R>
+void fuzz_generator_setter(Input& in, Generators<R>& g) {
+  const auto non_negative = [](R x) { return real_isfinite(x) && x >= R(0); };
+  const auto positive = [](R x) { return real_isfinite(x) && x > R(0); };
+  const auto finite_number = [](R x) { return real_isfinite(x); };
+  const auto finite_vector = [](const Vector3<R>& v) { return is_finite(v); };
+  const auto spring_state = [](const auto& s) { return std::tuple(s.stiffness(), s.rest_length()); };
+  const auto stiff_state = [](const auto& s) {
+    return std::tuple(s.anchor(), s.stiffness(), s.damping());
+  };
+  const auto buoyancy_state = [&] {
+    return std::tuple(g.buoyancy.max_depth(), g.buoyancy.volume(), g.buoyancy.water_height(),
+                      g.buoyancy.liquid_density(), g.buoyancy.gravity());
+  };
+  switch (in.byte() % 16) {
+    case 0: {
+      const auto v = in.vector<R>();
+      fuzz_setter(v, finite_vector(v), "Gravity::set_gravity", "gravity",
+                  [&](const auto& x) { g.gravity.set_gravity(x); }, [&] { return g.gravity.gravity(); });
+      break;
+    }
+    case 1:
+    case 2: {
+      const R x = in.number<R>();
+      const bool first = in.byte() % 2 == 0;
+      fuzz_setter(x, non_negative(x), first ? "Drag::set_k1" : "Drag::set_k2", first ? "k1" : "k2",
+                  [&](R y) { first ? g.drag.set_k1(y) : g.drag.set_k2(y); },
+                  [&] { return std::tuple(g.drag.k1(), g.drag.k2()); });
+      break;
+    }
+    case 3:
+    case 4: {
+      const R x = in.number<R>();
+      const bool stiffness = in.byte() % 2 == 0;
+      auto set = [&](auto& s) {
+        fuzz_setter(x, non_negative(x), stiffness ? "set_stiffness" : "set_rest_length",
+                    stiffness ? "stiffness" : "rest_length",
+                    [&](R y) { stiffness ? s.set_stiffness(y) : s.set_rest_length(y); },
+                    [&] { return spring_state(s); });
+      };
+      switch (in.byte() % 3) {
+        case 0: set(g.spring); break;
+        case 1: set(g.bungee); break;
+        default: set(g.links); break;
+      }
+      break;
+    }
+    case 5: {
+      const auto v = in.vector<R>();
+      auto set = [&](auto& s) {
+        fuzz_setter(v, finite_vector(v), "set_anchor", "anchor",
+                    [&](const auto& x) { s.set_anchor(x); }, [&] { return s.anchor(); });
+      };
+      if (in.byte() % 2 == 0) set(g.spring);
+      else set(g.bungee);
+      break;
+    }
+    case 6:
+    case 7:
+    case 8: {
+      const R x = in.number<R>();
+      switch (in.byte() % 5) {
+        case 0:
+          fuzz_setter(x, positive(x), "Buoyancy::set_max_depth", "max_depth",
+                      [&](R y) { g.buoyancy.set_max_depth(y); }, buoyancy_state);
+          break;
+        case 1:
+          fuzz_setter(x, positive(x), "Buoyancy::set_volume", "volume",
+                      [&](R y) { g.buoyancy.set_volume(y); }, buoyancy_state);
+          break;
+        case 2:
+          fuzz_setter(x, finite_number(x), "Buoyancy::set_water_height", "water_height",
+                      [&](R y) { g.buoyancy.set_water_height(y); }, buoyancy_state);
+          break;
+        case 3:
+          fuzz_setter(x, non_negative(x), "Buoyancy::set_liquid_density", "liquid_density",
+                      [&](R y) { g.buoyancy.set_liquid_density(y); }, buoyancy_state);
+          break;
+        default:
+          fuzz_setter(x, non_negative(x), "Buoyancy::set_gravity", "g",
+                      [&](R y) { g.buoyancy.set_gravity(y); }, buoyancy_state);
+          break;
+      }
+      break;
+    }
+    default: {  // the two stiff springs share their parameters' setters
+      auto set = [&](auto& s) {
+        switch (in.byte() % 3) {
+          case 0: {
+            const auto v = in.vector<R>();
+            fuzz_setter(v, finite_vector(v), "StiffSpring::set_anchor", "anchor",
+                        [&](const auto& y) { s.set_anchor(y); }, [&] { return stiff_state(s); });
+            break;
+          }
+          case 1: {
+            const R x = in.number<R>();
+            fuzz_setter(x, non_negative(x), "StiffSpring::set_stiffness", "stiffness",
+                        [&](R y) { s.set_stiffness(y); }, [&] { return stiff_state(s); });
+            break;
+          }
+          default: {
+            const R x = in.number<R>();
+            fuzz_setter(x, non_negative(x), "StiffSpring::set_damping", "damping",
+                        [&](R y) { s.set_damping(y); }, [&] { return stiff_state(s); });
+            break;
+          }
+        }
+      };
+      if (in.byte() % 2 == 0) set(g.stiff);
+      else set(g.position_only);
+      break;
+    }
+  }
+}
+
+/// A finite number from the input (a non-finite one becomes `fallback`).
+template <class R>
+R finite_number(Input& in, R fallback = R(0)) {
+  const R x = in.number<R>();
+  return real_isfinite(x) ? x : fallback;
+}
+template <class R>
+Vector3<R> finite_vector(Input& in) {
+  const R x = finite_number<R>(in), y = finite_number<R>(in), z = finite_number<R>(in);
+  return {x, y, z};
+}
+
+/// The force `generator` adds to `body` through forces::update_force: finite and added, or
+/// reported and not added; finite when `in_range`.
+template <class G, class Body>
+void fuzz_update_force(const G& generator, const Body& body, typename Body::real t, bool in_range,
+                       const char* name) {
+  Body copy = body;
+  forces::update_force(generator, copy, t);
+  if (report.calls == 0) {
+    require(finite(copy.force_accumulator()), "a non-finite force was added by", name);
+  } else {
+    require(!in_range, "a force inside the physical box was reported:", name);
+    require(report.calls == 1 && report.function == "forces::update_force" &&
+                report.argument == "force",
+            "an overflowing force was reported wrongly:", report.message.c_str());
+    require(same_state(copy, body), "a rejected update_force changed the body:", name);
+    report = {};
+  }
+}
+
+template <class R>
+void fuzz_bodies(Input& in, const Generators<R>& g) {
+  using Body = Particle<R, damping::None, position::SemiImplicit>;
+  Body body;
+  body.set_position(finite_vector<R>(in));
+  body.set_velocity(finite_vector<R>(in));
+  R inverse_mass = finite_number<R>(in, R(1));
+  body.set_inverse_mass(inverse_mass < R(0) ? -inverse_mass : inverse_mass);
+  body.set_acceleration(finite_vector<R>(in));
+  expect_accepted("body setup");
+  const R t = finite_number<R>(in);
+  const R duration = t < R(0) ? -t : t;
+  const bool body_in_box = in_box(body.position()) && in_box(body.velocity()) &&
+                           in_box(body.inverse_mass()) && in_box(duration);
+  const auto box = [&](auto... parameters) { return body_in_box && (in_box(parameters) && ...); };
+  fuzz_update_force(g.gravity, body, duration, box(g.gravity.gravity()), "Gravity");
+  fuzz_update_force(g.drag, body, duration, box(g.drag.k1(), g.drag.k2()), "Drag");
+  fuzz_update_force(g.spring, body, duration,
+                    box(g.spring.anchor(), g.spring.stiffness(), g.spring.rest_length()),
+                    "AnchoredSpring");
+  fuzz_update_force(g.bungee, body, duration,
+                    box(g.bungee.anchor(), g.bungee.stiffness(), g.bungee.rest_length()),
+                    "AnchoredBungee");
+  fuzz_update_force(g.buoyancy, body, duration,
+                    box(g.buoyancy.max_depth(), g.buoyancy.volume(), g.buoyancy.water_height(),
+                        g.buoyancy.liquid_density(), g.buoyancy.gravity()),
+                    "Buoyancy");
+  fuzz_update_force(g.position_only, body, duration,
+                    box(g.position_only.anchor(), g.position_only.stiffness(),
+                        g.position_only.damping()),
+                    "PositionOnlyStiffSpring");
+  // The closed-form step: a finite state, or reported and nothing changed.
+  Body stepped = body;
+  g.stiff.advance(stepped, duration);
+  if (report.calls == 0) {
+    require(finite(stepped.position()) && finite(stepped.velocity()),
+            "StiffSpring::advance stored a non-finite state");
+  } else {
+    require(!box(g.stiff.anchor(), g.stiff.stiffness(), g.stiff.damping(), body.acceleration()),
+            "StiffSpring::advance reported a state inside the physical box");
+    require(report.calls == 1 && report.function == "StiffSpring::advance",
+            "StiffSpring::advance reported wrongly:", report.message.c_str());
+    require(same_state(stepped, body), "a rejected advance changed the body");
+    report = {};
+  }
+}
+
+template <class R>
+void fuzz_links(Input& in, const Generators<R>& g) {
+  std::array<Vector3<R>, 4> positions{};
+  std::array<Vector3<R>, 4> velocities{};
+  std::array<Vector3<R>, 4> accumulated{};
+  for (auto& p : positions) p = finite_vector<R>(in);
+  std::array<forces::Link, 3> links{};
+  for (auto& link : links) link = {in.byte() % 6u, in.byte() % 6u};  // 4 and 5 are out of range
+  forces::SpanBodies<R> bodies{positions, velocities, {}, accumulated};
+  forces::apply_links(g.links, std::span<const forces::Link>(links), bodies);
+  if (report.calls == 0) {
+    // Each link's force is finite (their sum on one body may still overflow: that is the
+    // accumulator's range, not a generator's).
+    for (const auto& link : links) {
+      require(finite(g.links.force_between(positions[link.first], positions[link.second])),
+              "apply_links accepted a non-finite force");
+    }
+  } else {
+    for (const auto& f : accumulated) require(f == Vector3<R>{}, "a rejected apply_links changed a body");
+    report = {};
+  }
+}
+
+template <class R>
+void fuzz_forces(Input& in) {
+  Generators<R> g;
+  for (int op = 0; op < 200 && !in.empty(); ++op) {
+    switch (in.byte() % 4) {
+      case 0:
+      case 1: fuzz_generator_setter(in, g); break;
+      case 2: fuzz_bodies(in, g); break;
+      default: fuzz_links(in, g); break;
+    }
+    expect_accepted("force generator operation");
+  }
+}
+
 // --- the configurations ---------------------------------------------------------------------
 
 template <class R, class D, class P>
@@ -686,7 +975,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static_cast<void>(installed);
   report = {};
   Input in(data, size);
+  const std::uint8_t first = in.byte();
+  if (first >= 0xF0) {  // the force generators
+    if (first % 2 == 0) fuzz_forces<float>(in);
+    else fuzz_forces<double>(in);
+    return 0;
+  }
   constexpr std::size_t count = std::tuple_size_v<Configs>;
-  dispatch(in.byte() % count, in, std::make_index_sequence<count>{});
+  dispatch(first % count, in, std::make_index_sequence<count>{});
   return 0;
 }

@@ -1,0 +1,69 @@
+// pointmass/forces/apply.hpp — how a generator reaches one body or a batch.
+//
+// Owns: the FieldGenerator concept (a generator whose force depends on one body's own state:
+// `force(p, v, inverse_mass, t)`), the free `update_force(generator, body, t)` that adds a
+// generator's force to one body, and `apply(generator, bodies, t)` for a batch.
+// Must not include: particle.hpp, particle_system.hpp, a generator's header (every generator
+// reaches bodies through these two functions; none needs them to be declared first).
+#pragma once
+
+#include <cstddef>
+#include <type_traits>
+
+#include "../config.hpp"
+#include "../real.hpp"
+#include "../vector3.hpp"
+#include "bodies.hpp"
+#include "detail/checks.hpp"
+
+namespace pointmass::forces {
+
+/// A generator that computes a body's force from its own state alone.
+template <class G, class R>
+concept FieldGenerator = requires(const G& g, const Vector3<R>& p, R x) {
+  { g.force(p, p, x, x) } -> std::same_as<Vector3<R>>;
+};
+
+/// A generator with its own `update_force(body, t)` member (a spring between two particles,
+/// or a user's generator type).
+template <class G, class B>
+concept HasUpdateForce = requires(G& g, B& body, typename B::real t) {
+  g.update_force(body, t);
+};
+
+/// Adds `generator`'s force on `body` for a step of `duration` to the body's accumulator.
+/// A field generator's force is computed by its `force(p, v, inverse_mass, t)`, so a particle
+/// and a batch (`apply`) get the same bits; a force beyond the range of the number type
+/// (docs/forces.md, "Ranges") is reported through the contract and not added. A generator
+/// with its own `update_force` member is called through it.
+template <class G, class B>
+  requires HasUpdateForce<G, B> ||
+           (PlainBody<B, typename B::real> && FieldGenerator<G, typename B::real>)
+constexpr void update_force(G& generator, B& body, typename B::real duration) {
+  if constexpr (HasUpdateForce<G, B>) {
+    generator.update_force(body, duration);
+  } else {
+    const auto f = generator.force(body.position(), body.velocity(), body.inverse_mass(), duration);
+    if (detail::check_force("forces::update_force", f)) body.add_force(f);
+  }
+}
+
+/// Adds `generator`'s force to every body of the batch. With POINTMASS_CHECKS on, every force
+/// is computed and checked first, so a force beyond the range of the number type is reported
+/// and no body gets a force; with checks off, the forces are added unchecked.
+template <Bodies B, FieldGenerator<typename B::real> G>
+constexpr void apply(const G& generator, B& bodies, typename B::real duration) {
+  const std::size_t n = bodies.size();
+  const auto force_on = [&](std::size_t i) {
+    return generator.force(bodies.position(i), bodies.velocity(i), bodies.inverse_mass(i),
+                           duration);
+  };
+#if POINTMASS_CHECKS
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!detail::check_force("forces::apply", force_on(i))) return;
+  }
+#endif
+  for (std::size_t i = 0; i < n; ++i) bodies.add_force(i, force_on(i));
+}
+
+}  // namespace pointmass::forces

@@ -1,0 +1,327 @@
+// pointmass/forces/generators.hpp — the force generators over a body's own state, the
+// springs between bodies, and apply_links for springs between the bodies of a batch.
+//
+// Owns: Gravity, Drag, SpringParameters, AnchoredSpring / AnchoredBungee, Spring / Bungee
+// (between two particles), Buoyancy, LinkSprings / LinkBungees, Link, apply_links, and the
+// spring force they share (detail::spring_force). Each field generator's pure
+// `force(p, v, inverse_mass, t)` is what `update_force` and `apply` (apply.hpp) call.
+// Must not include: particle.hpp, particle_system.hpp (a spring between particles is a
+// template over the body type), oscillator.hpp or registry.hpp.
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+#include "../config.hpp"
+#include "../real.hpp"
+#include "../vector3.hpp"
+#include "bodies.hpp"
+#include "detail/checks.hpp"
+
+namespace pointmass::forces {
+
+namespace detail {
+
+/// The separation p - q as a unit direction and a length in units of `scale`: the length
+/// |p - q| = length * scale, scale 1 unless p - q or its length overflows (then 4).
+template <Real R>
+struct Separation {
+  Vector3<R> direction;
+  R length;
+  R scale;
+};
+
+template <Real R>
+constexpr Separation<R> separation(const Vector3<R>& p, const Vector3<R>& q) noexcept {
+  Vector3<R> d = p - q;
+  R length = magnitude(d);
+  R scale = R(1);
+  if (!real_isfinite(length)) {  // |p - q| beyond the largest R: a quarter of it is not
+    d = p * R(0.25) - q * R(0.25);
+    length = magnitude(d);
+    scale = R(4);
+  }
+  return {normalized(d), length, scale};
+}
+
+/// The force of a spring of stiffness k and rest length L on the end at p from the end at
+/// q: -k (|d| - L) d / |d| with d = p - q. Zero for k = 0 and for d = 0 (no direction). With
+/// `bungee`, zero while |d| <= L. Finite whenever k (|d| + L) is below the largest R.
+template <Real R>
+constexpr Vector3<R> spring_force(const Vector3<R>& p, const Vector3<R>& q, R k, R L,
+                                  bool bungee) noexcept {
+  if (!(k > R(0))) return {};
+  const Separation<R> s = separation(p, q);
+  if (!(s.length > R(0))) return {};
+  const R extension = s.length - L / s.scale;  // signed: negative when compressed
+  if (bungee && !(extension > R(0))) return {};
+  return s.direction * (-k * extension * s.scale);
+}
+
+}  // namespace detail
+
+/// Gravity as a force, f = m g, for use through a registry (a particle's own acceleration is
+/// the cheaper way to give every particle the same g). An immovable body gets nothing (its
+/// mass is infinite: m g would be infinite or NaN). Range: m |g| below the largest R.
+template <Real R>
+class Gravity {
+ public:
+  using real = R;
+  constexpr Gravity() noexcept = default;
+  constexpr explicit Gravity(const Vector3<R>& g) { set_gravity(g); }
+
+  constexpr Vector3<R> gravity() const noexcept { return g_; }
+  constexpr void set_gravity(const Vector3<R>& g) {
+    if (detail::check_finite("Gravity::set_gravity", "gravity", g)) g_ = g;
+  }
+
+  constexpr Vector3<R> force(const Vector3<R>&, const Vector3<R>&, R inverse_mass,
+                             R) const noexcept {
+    if (!(inverse_mass > R(0))) return {};
+    return g_ / inverse_mass;
+  }
+
+ private:
+  Vector3<R> g_{R(0), R(-9.807), R(0)};
+};
+
+/// Drag against the velocity: magnitude k1 |v| + k2 |v|^2, so f = -v (k1 + k2 |v|). No force
+/// at rest (no direction, no NaN). Range: |v| (k1 + k2 |v|) below the largest R.
+template <Real R>
+class Drag {
+ public:
+  using real = R;
+  constexpr Drag() noexcept = default;
+  constexpr Drag(R k1, R k2) {
+    set_k1(k1);
+    set_k2(k2);
+  }
+
+  constexpr R k1() const noexcept { return k1_; }
+  constexpr R k2() const noexcept { return k2_; }
+  constexpr void set_k1(R k1) {
+    if (detail::check_non_negative("Drag::set_k1", "k1", k1)) k1_ = k1;
+  }
+  constexpr void set_k2(R k2) {
+    if (detail::check_non_negative("Drag::set_k2", "k2", k2)) k2_ = k2;
+  }
+
+  constexpr Vector3<R> force(const Vector3<R>&, const Vector3<R>& v, R, R) const noexcept {
+    // k2 = 0 never multiplies the speed (which may be infinite for |v| beyond the largest R).
+    const R per_speed = k2_ > R(0) ? k1_ + k2_ * magnitude(v) : k1_;
+    return v * -per_speed;
+  }
+
+ private:
+  R k1_ = R(0);
+  R k2_ = R(0);
+};
+
+/// What springs and bungees share: stiffness k >= 0 and rest length L >= 0, validated, and
+/// the force between the two ends (a bungee's, with IsBungee).
+template <Real R, bool IsBungee = false>
+class SpringParameters {
+ public:
+  using real = R;
+  constexpr SpringParameters() noexcept = default;
+  constexpr SpringParameters(R stiffness, R rest_length) {
+    set_stiffness(stiffness);
+    set_rest_length(rest_length);
+  }
+  constexpr R stiffness() const noexcept { return k_; }
+  constexpr R rest_length() const noexcept { return rest_length_; }
+  constexpr void set_stiffness(R stiffness) {
+    if (detail::check_non_negative("set_stiffness", "stiffness", stiffness)) k_ = stiffness;
+  }
+  constexpr void set_rest_length(R rest_length) {
+    if (detail::check_non_negative("set_rest_length", "rest_length", rest_length)) {
+      rest_length_ = rest_length;
+    }
+  }
+
+  /// The force on the end at p from the end at `other_position`.
+  constexpr Vector3<R> force_between(const Vector3<R>& p,
+                                     const Vector3<R>& other_position) const noexcept {
+    return detail::spring_force(p, other_position, k_, rest_length_, IsBungee);
+  }
+
+ protected:
+  R k_ = R(0);
+  R rest_length_ = R(0);
+};
+
+/// A spring (or with IsBungee, a bungee) from a body to a fixed anchor point.
+/// Range: k (|p - anchor| + L) below the largest R.
+template <Real R, bool IsBungee = false>
+class BasicAnchoredSpring : public SpringParameters<R, IsBungee> {
+ public:
+  constexpr BasicAnchoredSpring() noexcept = default;
+  constexpr BasicAnchoredSpring(const Vector3<R>& anchor, R stiffness, R rest_length)
+      : SpringParameters<R, IsBungee>(stiffness, rest_length) {
+    set_anchor(anchor);
+  }
+  constexpr Vector3<R> anchor() const noexcept { return anchor_; }
+  constexpr void set_anchor(const Vector3<R>& anchor) {
+    if (detail::check_finite("set_anchor", "anchor", anchor)) anchor_ = anchor;
+  }
+
+  constexpr Vector3<R> force(const Vector3<R>& p, const Vector3<R>&, R, R) const noexcept {
+    return this->force_between(p, anchor_);
+  }
+
+ private:
+  Vector3<R> anchor_{};
+};
+
+template <Real R>
+using AnchoredSpring = BasicAnchoredSpring<R, false>;
+template <Real R>
+using AnchoredBungee = BasicAnchoredSpring<R, true>;
+
+/// A spring (or bungee) between two bodies, as the reference engine has it: registered with
+/// one body, it pulls that body towards `other`; register a second one, with the ends swapped,
+/// for the other body. In a batch, `apply_links` does both ends at once. The other body is
+/// not owned: it must outlive the spring's use.
+template <class Body, bool IsBungee = false>
+class BasicSpring : public SpringParameters<typename Body::real, IsBungee> {
+ public:
+  using real = typename Body::real;
+  constexpr BasicSpring() noexcept = default;
+  constexpr BasicSpring(const Body& other, real stiffness, real rest_length)
+      : SpringParameters<real, IsBungee>(stiffness, rest_length), other_(&other) {}
+
+  constexpr const Body* other() const noexcept { return other_; }
+  constexpr void set_other(const Body& other) noexcept { other_ = &other; }
+
+  /// Adds the force from the other end (nothing without one); a force beyond the range of
+  /// the number type is reported, as by forces::update_force.
+  template <PlainBody<real> B>
+  constexpr void update_force(B& body, real) const {
+    if (other_ == nullptr) return;
+    const auto f = this->force_between(body.position(), other_->position());
+    if (detail::check_force("Spring::update_force", f)) body.add_force(f);
+  }
+
+ private:
+  const Body* other_ = nullptr;
+};
+
+template <class Body>
+using Spring = BasicSpring<Body, false>;
+template <class Body>
+using Bungee = BasicSpring<Body, true>;
+
+/// Buoyancy of a body of half-height D (`max_depth`) and volume V in a liquid of density rho
+/// whose surface is the plane y = h, under gravity g: the body is out of the liquid for
+/// y >= h + D, fully submerged for y <= h - D, and in between the submerged fraction s varies
+/// linearly. The force is +Y, rho V g s, never downwards (Archimedes: the weight of the
+/// displaced liquid). Defaults: water (1000 kg/m^3), g = 9.807 m/s^2. Range: rho V g below
+/// the largest R.
+template <Real R>
+class Buoyancy {
+ public:
+  using real = R;
+  constexpr Buoyancy() noexcept = default;
+  constexpr Buoyancy(R max_depth, R volume, R water_height, R liquid_density = R(1000),
+                     R g = R(9.807)) {
+    set_max_depth(max_depth);
+    set_volume(volume);
+    set_water_height(water_height);
+    set_liquid_density(liquid_density);
+    set_gravity(g);
+  }
+
+  constexpr R max_depth() const noexcept { return max_depth_; }
+  constexpr R volume() const noexcept { return volume_; }
+  constexpr R water_height() const noexcept { return water_height_; }
+  constexpr R liquid_density() const noexcept { return density_; }
+  constexpr R gravity() const noexcept { return g_; }
+  constexpr void set_max_depth(R max_depth) {
+    if (detail::check_positive("Buoyancy::set_max_depth", "max_depth", max_depth)) {
+      max_depth_ = max_depth;
+    }
+  }
+  constexpr void set_volume(R volume) {
+    if (detail::check_positive("Buoyancy::set_volume", "volume", volume)) volume_ = volume;
+  }
+  constexpr void set_water_height(R water_height) {
+    if (detail::check_finite("Buoyancy::set_water_height", "water_height", water_height)) {
+      water_height_ = water_height;
+    }
+  }
+  constexpr void set_liquid_density(R density) {
+    if (detail::check_non_negative("Buoyancy::set_liquid_density", "liquid_density", density)) {
+      density_ = density;
+    }
+  }
+  constexpr void set_gravity(R g) {
+    if (detail::check_non_negative("Buoyancy::set_gravity", "g", g)) g_ = g;
+  }
+
+  /// The submerged fraction s = ((h - y) / D + 1) / 2, clamped to [0, 1], at height y. (Not
+  /// (h + D - y) / (2 D): 2 D overflows for D beyond half the largest R, and s would be 0.)
+  constexpr R submerged_fraction(R y) const noexcept {
+    const R s = ((water_height_ - y) / max_depth_ + R(1)) / R(2);
+    return s > R(1) ? R(1) : (s > R(0) ? s : R(0));
+  }
+  constexpr Vector3<R> force(const Vector3<R>& p, const Vector3<R>&, R, R) const noexcept {
+    return {R(0), density_ * volume_ * g_ * submerged_fraction(p.y), R(0)};
+  }
+
+ private:
+  R max_depth_ = R(1);
+  R volume_ = R(0);
+  R water_height_ = R(0);
+  R density_ = R(1000);
+  R g_ = R(9.807);
+};
+
+// --- springs between the bodies of a batch --------------------------------------------------
+
+/// A spring between bodies `first` and `second` of a batch.
+struct Link {
+  std::size_t first;
+  std::size_t second;
+};
+
+/// Springs (or bungees) of one stiffness and rest length between pairs of bodies of a batch:
+/// each link adds the force to `first` and its opposite to `second` (Newton's third law).
+template <Real R, bool IsBungee = false>
+class BasicLinkSprings : public SpringParameters<R, IsBungee> {
+ public:
+  using SpringParameters<R, IsBungee>::SpringParameters;
+};
+template <Real R>
+using LinkSprings = BasicLinkSprings<R, false>;
+template <Real R>
+using LinkBungees = BasicLinkSprings<R, true>;
+
+/// Adds every link's spring force to its two bodies. Every index is checked (always) before
+/// any force is added, and with POINTMASS_CHECKS on every force too: a bad link or a force
+/// beyond the range of the number type is reported and no body gets a force.
+template <Bodies B, bool IsBungee>
+constexpr void apply_links(const BasicLinkSprings<typename B::real, IsBungee>& springs,
+                           std::span<const Link> links, B& bodies) {
+  const std::size_t n = bodies.size();
+  for (const Link& link : links) {
+    if (!detail::check_index("forces::apply_links", "link.first", link.first, n) ||
+        !detail::check_index("forces::apply_links", "link.second", link.second, n)) {
+      return;
+    }
+  }
+  const auto force_of = [&](const Link& link) {
+    return springs.force_between(bodies.position(link.first), bodies.position(link.second));
+  };
+#if POINTMASS_CHECKS
+  for (const Link& link : links) {
+    if (!detail::check_force("forces::apply_links", force_of(link))) return;
+  }
+#endif
+  for (const Link& link : links) {
+    const auto f = force_of(link);
+    bodies.add_force(link.first, f);
+    bodies.add_force(link.second, -f);
+  }
+}
+
+}  // namespace pointmass::forces

@@ -1,0 +1,225 @@
+// pointmass/forces/oscillator.hpp — the damped harmonic oscillator in closed form, and the
+// stiff springs built on it.
+//
+// Owns: OscillatorState, damped_oscillator (the exact solution of x'' = -w0^2 x - 2 gamma x'),
+// StiffSpringParameters, StiffSpring (a step that sets a body's position and velocity from
+// the closed form: exact at any step when the spring is the only force) and
+// PositionOnlyStiffSpring (the reference engine's "fake spring" as a force: right positions
+// for one step, a period sqrt(2) times too long; kept for compatibility).
+// Must not include: particle.hpp, particle_system.hpp (the bodies are concepts, bodies.hpp),
+// generators.hpp or registry.hpp.
+#pragma once
+
+#include <limits>
+
+#include "../config.hpp"
+#include "../real.hpp"
+#include "../vector3.hpp"
+#include "bodies.hpp"
+#include "detail/checks.hpp"
+
+namespace pointmass::forces {
+
+/// A position and velocity (relative to the oscillator's rest point).
+template <Real R>
+struct OscillatorState {
+  Vector3<R> position;
+  Vector3<R> velocity;
+};
+
+/// The exact solution after time t >= 0 of x'' = -w0^2 x - 2 gamma x' from (x0, v0), with
+/// w0^2 = k / m >= 0 and gamma = c / (2 m) >= 0. Writing Omega^2 = w0^2 - gamma^2 and
+/// y = e^(gamma t) x (so y'' = -Omega^2 y):
+///   x(t) = e^(-gamma t) [ x0 C + (v0 + gamma x0) S ]
+///   v(t) = e^(-gamma t) [ v0 C - (w0^2 x0 + gamma v0) S ]
+/// with C = cos(Omega t), S = sin(Omega t) / Omega        (under-damped, gamma < w0),
+///      C = 1,            S = t                           (critically damped, gamma = w0),
+///      C = cosh(lambda t), S = sinh(lambda t) / lambda   (over-damped, lambda^2 = -Omega^2).
+/// Omega = w0 sqrt((1 - q)(1 + q)) with q = gamma / w0, and lambda = gamma sqrt((1 - r)(1 + r))
+/// with r = w0 / gamma: neither squares gamma, which overflows float from gamma = 2e19.
+/// The factors e^(-gamma t) C and e^(-gamma t) S are computed together so that nothing
+/// overflows for large t: e^(-gamma t) cosh(lambda t) = (e^(-(gamma - lambda) t) +
+/// e^(-(gamma + lambda) t)) / 2 with gamma - lambda = w0^2 / (gamma + lambda) (no
+/// cancellation), and sinh(lambda t) / lambda through expm1 when lambda t is small. No NaN for
+/// finite input and any t >= 0 while w0^2 |x0|, gamma |x0| and gamma |v0| are below the
+/// largest R.
+template <Real R>
+constexpr OscillatorState<R> damped_oscillator(R w0_squared, R gamma, const Vector3<R>& x0,
+                                               const Vector3<R>& v0, R t) noexcept {
+  if (!(t > R(0))) return {x0, v0};
+  const R w0 = real_sqrt(w0_squared);
+  R ec;  // e^(-gamma t) C
+  R es;  // e^(-gamma t) S
+  if (gamma < w0) {
+    const R q = gamma / w0;
+    const R omega = w0 * real_sqrt((R(1) - q) * (R(1) + q));
+    const R decay = real_exp(-gamma * t);
+    ec = decay * real_cos(omega * t);
+    es = decay * real_sin(omega * t) / omega;
+  } else if (gamma > w0) {
+    const R r = w0 / gamma;
+    const R root = real_sqrt((R(1) - r) * (R(1) + r));
+    const R lambda = gamma * root;
+    const R slow = w0 * r / (R(1) + root);  // gamma - lambda = w0^2 / (gamma + lambda)
+    const R e_slow = real_exp(-slow * t);
+    const R e_fast = real_exp(-(gamma * t + lambda * t));
+    ec = (e_slow + e_fast) / R(2);
+    if (lambda * t < R(0.5)) {
+      // sinh(lambda t) / lambda = e^(lambda t) (1 - e^(-2 lambda t)) / (2 lambda)
+      es = -e_slow * real_expm1(R(-2) * (lambda * t)) / lambda / R(2);
+    } else {
+      es = (e_slow - e_fast) / lambda / R(2);
+    }
+  } else {
+    const R decay = real_exp(-gamma * t);
+    ec = decay;
+    es = decay * t;
+  }
+  return {x0 * ec + (v0 + x0 * gamma) * es, v0 * ec - (x0 * w0_squared + v0 * gamma) * es};
+}
+
+/// What both stiff springs share: a damped spring of rest length 0 from a body to a fixed
+/// anchor, stiffness k >= 0 and damping c >= 0 (force -k x - c v, x = p - anchor), validated;
+/// and the exact state after a step of this spring alone.
+template <Real R>
+class StiffSpringParameters {
+ public:
+  using real = R;
+  constexpr StiffSpringParameters() noexcept = default;
+  constexpr StiffSpringParameters(const Vector3<R>& anchor, R stiffness, R damping) {
+    set_anchor(anchor);
+    set_stiffness(stiffness);
+    set_damping(damping);
+  }
+
+  constexpr Vector3<R> anchor() const noexcept { return anchor_; }
+  constexpr R stiffness() const noexcept { return k_; }
+  constexpr R damping() const noexcept { return c_; }
+  constexpr void set_anchor(const Vector3<R>& anchor) {
+    if (detail::check_finite("StiffSpring::set_anchor", "anchor", anchor)) anchor_ = anchor;
+  }
+  constexpr void set_stiffness(R stiffness) {
+    if (detail::check_non_negative("StiffSpring::set_stiffness", "stiffness", stiffness)) {
+      k_ = stiffness;
+    }
+  }
+  /// The damping coefficient c >= 0 (force -c v, in N s/m).
+  constexpr void set_damping(R damping) {
+    if (detail::check_non_negative("StiffSpring::set_damping", "damping", damping)) c_ = damping;
+  }
+
+  /// The exact state, relative to the world, after `duration` of this spring alone, for a
+  /// body of inverse mass `inverse_mass` > 0. Range: k / m and c / m finite, and
+  /// damped_oscillator's.
+  constexpr OscillatorState<R> exact_state(const Vector3<R>& p, const Vector3<R>& v,
+                                           R inverse_mass, R duration) const noexcept {
+    OscillatorState<R> s = damped_oscillator(k_ * inverse_mass, c_ * inverse_mass / R(2),
+                                             p - anchor_, v, duration);
+    s.position += anchor_;
+    return s;
+  }
+
+ protected:
+  Vector3<R> anchor_{};
+  R k_ = R(0);
+  R c_ = R(0);
+};
+
+/// A stiff damped spring from a body to a fixed anchor, stepped in closed form instead of
+/// integrated: call `advance(body, t)` in place of `body.integrate(t)`. For a body of mass m,
+/// x = p - anchor obeys m x'' = -k x - c x' + m a, where a is the body's own acceleration plus
+/// its accumulated forces over m, held constant over the step. With w0^2 = k / m:
+///   * w0 t >= 1 (the spring is stiff for this step): exact for constant a. The body
+///     oscillates about the shifted rest point anchor + a / w0^2, in closed form.
+///   * w0 t < 1: Strang splitting, v += a t / 2, then (x, v) move exactly along the damped
+///     oscillator for t, then v += a t / 2: second order in t, never dividing by w0^2.
+/// So with the spring the only force (a = 0), the position and velocity after every step are
+/// the closed form's at any step: no stability limit, no period error; with gravity (constant
+/// a) they are exact at steps w0 t >= 1 and second-order accurate below; with forces that
+/// change during the step, second order.
+/// The body's damping policy is not applied (the spring's damping c is the damping); the
+/// accumulator is cleared, an immovable body does not move, a zero step changes nothing, as
+/// `integrate` does. A negative or non-finite duration is reported, as is a state beyond the
+/// range of the number type (docs/forces.md, "Ranges"); either changes nothing.
+template <Real R>
+class StiffSpring : public StiffSpringParameters<R> {
+ public:
+  using StiffSpringParameters<R>::StiffSpringParameters;
+
+  template <SteppableBody<R> B>
+  constexpr void advance(B& body, R duration) const {
+    if (!detail::check_duration("StiffSpring::advance", duration)) return;
+    const R inverse_mass = body.inverse_mass();
+    if (!(inverse_mass > R(0))) {
+      body.clear_accumulator();
+      return;
+    }
+    if (duration == R(0)) return;
+    const Vector3<R> a = body.acceleration() + body.force_accumulator() * inverse_mass;
+    const R w0_squared = this->k_ * inverse_mass;
+    OscillatorState<R> s;
+    if (w0_squared * duration * duration >= R(1)) {
+      const Vector3<R> rest = this->anchor_ + a / w0_squared;
+      s = damped_oscillator(w0_squared, this->c_ * inverse_mass / R(2), body.position() - rest,
+                            body.velocity(), duration);
+      s.position += rest;
+    } else {
+      const Vector3<R> half_kick = a * (duration / R(2));
+      s = this->exact_state(body.position(), body.velocity() + half_kick, inverse_mass,
+                            duration);
+      s.velocity += half_kick;
+    }
+    if (!detail::check_state("StiffSpring::advance", s.position, s.velocity)) return;
+    body.set_position(s.position);
+    body.set_velocity(s.velocity);
+    body.clear_accumulator();
+  }
+};
+
+namespace detail {
+/// About the cube root of epsilon: below this w0 t and gamma t, the difference quotient of
+/// the closed form loses more to cancellation than the limit t -> 0 is away.
+template <Real R>
+inline constexpr R short_step = [] {
+  R x = R(1);
+  while (x * x * x > std::numeric_limits<R>::epsilon()) x /= R(2);
+  return x;
+}();
+}  // namespace detail
+
+/// The reference engine's "fake" stiff spring as a force, kept for compatibility; prefer
+/// StiffSpring::advance. What it does wrong: for a step t it adds the force that brings a body
+/// with position::SemiImplicit and damping::None to the closed form's position,
+///   f = m [ (x(t) - x0) / t - v0 ] / t,
+/// so every step ends at the closed form's position from the body's current state, but the
+/// velocity it leaves is the step's mean velocity, which the next step takes as the initial
+/// velocity: the body oscillates with a period sqrt(2) times the true one at every step size
+/// (it does not converge as t shrinks) and a wrong amplitude. What it does right, unlike the
+/// reference engine's: no NaN when over-damped (sqrt(4 k - c^2) there), a force when
+/// critically damped. Stability of its step map: see docs/forces.md.
+/// For w0 t and gamma t below about the cube root of epsilon the force is its limit as
+/// t -> 0, -(k x + c v) / 2 (half the spring's force: that is its error, seen at small steps),
+/// since the difference quotient would cancel; it never divides by t^2 or by inverse_mass t. Nothing on an immovable body, nothing for t = 0. Range: k |x| + c |v|
+/// below the largest R, and exact_state's.
+template <Real R>
+class PositionOnlyStiffSpring : public StiffSpringParameters<R> {
+ public:
+  using StiffSpringParameters<R>::StiffSpringParameters;
+
+  constexpr Vector3<R> force(const Vector3<R>& p, const Vector3<R>& v, R inverse_mass,
+                             R duration) const noexcept {
+    if (!(inverse_mass > R(0)) || !(duration > R(0))) return {};
+    const R w0_squared = this->k_ * inverse_mass;
+    const R gamma = this->c_ * inverse_mass / R(2);
+    const Vector3<R> x = p - this->anchor_;
+    if (real_sqrt(w0_squared) * duration < detail::short_step<R> &&
+        gamma * duration < detail::short_step<R>) {
+      return -(x * this->k_ + v * this->c_) / R(2);
+    }
+    const OscillatorState<R> s = damped_oscillator(w0_squared, gamma, x, v, duration);
+    const Vector3<R> mean_acceleration = ((s.position - x) / duration - v) / duration;
+    return mean_acceleration / inverse_mass;
+  }
+};
+
+}  // namespace pointmass::forces

@@ -1,0 +1,248 @@
+// pointmass/forces/registry.hpp — ForceRegistry: (particle, generator) pairs, applied each
+// step.
+//
+// Owns: ForceRegistry and the GeneratorFor concept (what a registry can hold: anything
+// `forces::update_force(generator, particle, t)` accepts: a field generator, or a type with
+// its own `update_force(particle, t)` member).
+// Must not include: particle.hpp, particle_system.hpp (the particle type is a parameter), a
+// generator's header (a registry holds any generator type).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <memory>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "apply.hpp"
+
+namespace pointmass::forces {
+
+/// What a registry can hold for particles of type P.
+template <class G, class P>
+concept GeneratorFor = requires(G& g, P& p, typename P::real t) { forces::update_force(g, p, t); };
+
+/// (particle, generator) pairs, like the reference engine's registry; `update_forces(t)` adds
+/// every generator's force to its particle. Two ways to register:
+///   * owning (the safe default): `add_owned(particle, generator)` stores a copy (or a moved
+///     generator) and `emplace<G>(particle, args...)` builds one in place; both return a
+///     reference to the registry's generator, which lives until its registration is removed
+///     or the registry is destroyed;
+///   * non-owning: `add(particle, generator)` keeps a pointer; the generator must outlive its
+///     registration (a generator in a std::vector that grows afterwards does not: use the
+///     owning form). A temporary is refused at compile time.
+/// Particles are never owned: a particle must outlive its registrations.
+/// Generators of the listed types Known... (registered non-const) are stored in one vector per
+/// type and called directly; any other type, or a const generator, is type-erased and called
+/// through one function pointer.
+/// Changing the registry from inside update_forces (a generator that removes itself or
+/// another, adds a registration, or clears) is safe and deferred: the pass calls exactly the
+/// registrations that existed when it began and are not removed before their turn; one added
+/// during the pass first acts in the next pass; a removed generator the registry owns is
+/// destroyed after the pass.
+template <class P, class... Known>
+  requires(GeneratorFor<Known, P> && ...)
+class ForceRegistry {
+ public:
+  using particle_type = P;
+  using real = typename P::real;
+
+  ForceRegistry() = default;
+  ForceRegistry(ForceRegistry&&) noexcept = default;
+  ForceRegistry& operator=(ForceRegistry&&) noexcept = default;
+
+  /// Registers a copy of `generator` (or the generator moved in), owned by the registry, to act
+  /// on `particle`; returns the registry's generator.
+  template <class G>
+  G& add_owned(P& particle, G generator) {
+    return emplace<G>(particle, std::move(generator));
+  }
+
+  /// Builds a generator G from `args` (constructor arguments, or an aggregate's members) in the
+  /// registry, to act on `particle`; returns it.
+  template <class G, class... Args>
+  G& emplace(P& particle, Args&&... args) {
+    static_assert(GeneratorFor<G, P>, "ForceRegistry::emplace: G needs a force(p, v, "
+                                      "inverse_mass, t) or an update_force(particle, t) member");
+    std::unique_ptr<G> owned;
+    if constexpr (std::is_constructible_v<G, Args&&...>) {
+      owned = std::make_unique<G>(std::forward<Args>(args)...);
+    } else {  // an aggregate, for compilers without C++20's parenthesised aggregate init
+      owned.reset(new G{std::forward<Args>(args)...});
+    }
+    G& generator = *owned;
+    insert<G>(particle, generator, std::move(owned));
+    return generator;
+  }
+
+  /// Registers `generator` (not owned: it must outlive the registration) to act on `particle`.
+  template <class G>
+  void add(P& particle, G& generator) {
+    static_assert(!std::is_const_v<G> || GeneratorFor<G, P> ||
+                      !GeneratorFor<std::remove_const_t<G>, P>,
+                  "ForceRegistry::add: this generator is const but its update_force member is "
+                  "not: pass a non-const generator, or make update_force a const member.");
+    static_assert(GeneratorFor<G, P> || (std::is_const_v<G> && GeneratorFor<std::remove_const_t<G>, P>),
+                  "ForceRegistry::add: a generator needs a force(p, v, inverse_mass, t) or an "
+                  "update_force(particle, t) member.");
+    insert<G>(particle, generator, nullptr);
+  }
+
+  /// A temporary would be destroyed while still registered.
+  template <class G>
+    requires(!std::is_lvalue_reference_v<G>)
+  void add(P&, G&&) {
+    static_assert(std::is_lvalue_reference_v<G>,
+                  "ForceRegistry::add keeps a pointer to the generator, and this one is a "
+                  "temporary: use add_owned (or emplace) to let the registry own it.");
+  }
+
+  /// Removes the first registration of `generator` on `particle`; returns whether there was
+  /// one. Inside update_forces the registration stops acting at once and is erased (an owned
+  /// generator destroyed) after the pass.
+  template <class G>
+  bool remove(const P& particle, const G& generator) {
+    const void* address = &generator;
+    const bool removed = [&] {
+      // A const registration is type-erased whatever its type.
+      if constexpr (GeneratorFor<const G, P>) {
+        if (mark_first(erased_, particle, address, &call<const G>)) return true;
+      }
+      if constexpr (is_known<G>) {
+        return mark_first(std::get<std::vector<Entry<G>>>(known_), particle, address);
+      } else {
+        return mark_first(erased_, particle, address, &call<G>);
+      }
+    }();
+    compact_unless_updating();
+    return removed;
+  }
+
+  /// Removes every registration (after the pass, when called inside update_forces).
+  void clear() noexcept {
+    std::apply([&](auto&... entries) { (mark_all(entries), ...); }, known_);
+    mark_all(erased_);
+    compact_unless_updating();
+  }
+
+  std::size_t size() const noexcept {
+    return std::apply([](const auto&... entries) { return (entries.size() + ... + 0u); },
+                      known_) +
+           erased_.size() - removed_;
+  }
+  bool empty() const noexcept { return size() == 0; }
+
+  /// Asks every registered generator to add its force to its particle for a step of
+  /// `duration`: the known types first (in the order of Known...), then the others, each in
+  /// the order they were added.
+  void update_forces(real duration) {
+    const Pass pass(*this);
+    std::apply([duration](auto&... entries) { (update_all(entries, duration), ...); }, known_);
+    update_all(erased_, duration);
+  }
+
+ private:
+  template <class G>
+  static constexpr bool is_known = (std::is_same_v<G, Known> || ...);
+
+  template <class G>
+  struct Entry {
+    P* particle;  // nullptr: removed, erased after the pass
+    G* generator;
+    std::unique_ptr<G> owned;
+    void update(real duration) const { forces::update_force(*generator, *particle, duration); }
+  };
+  using Update = void (*)(void*, P&, real);
+  struct ErasedEntry {
+    P* particle;  // nullptr: removed, erased after the pass
+    void* generator;
+    Update call;
+    std::unique_ptr<void, void (*)(void*)> owned;
+    void update(real duration) const { call(generator, *particle, duration); }
+  };
+
+  template <class G>
+  static void call(void* generator, P& particle, real duration) {
+    forces::update_force(*static_cast<G*>(generator), particle, duration);
+  }
+  template <class G>
+  static void destroy(void* generator) noexcept {
+    delete static_cast<G*>(generator);
+  }
+
+  template <class G>
+  void insert(P& particle, G& generator, std::unique_ptr<G> owned) {
+    if constexpr (is_known<G>) {
+      std::get<std::vector<Entry<G>>>(known_).push_back({&particle, &generator, std::move(owned)});
+    } else {
+      using Stored = std::remove_const_t<G>;
+      void* address = const_cast<Stored*>(&generator);
+      void* owned_address = const_cast<Stored*>(owned.release());
+      erased_.push_back({&particle, address, &call<G>, {owned_address, &destroy<Stored>}});
+    }
+  }
+
+  // Entries called in a pass are those present when it began; an entry removed during the
+  // pass is skipped from then on. Indices, not iterators: an add may reallocate the vector.
+  template <class Vec>
+  static void update_all(const Vec& entries, real duration) {
+    const std::size_t count = entries.size();
+    for (std::size_t i = 0; i < count; ++i) {
+      if (entries[i].particle != nullptr) entries[i].update(duration);
+    }
+  }
+
+  template <class Vec, class... Match>
+  bool mark_first(Vec& entries, const P& particle, const void* generator, Match... call_fn) {
+    for (auto& e : entries) {
+      bool same = e.particle == &particle && static_cast<const void*>(e.generator) == generator;
+      if constexpr (sizeof...(Match) == 1) same = same && ((e.call == call_fn) && ...);
+      if (same) {
+        e.particle = nullptr;
+        ++removed_;
+        return true;
+      }
+    }
+    return false;
+  }
+  template <class Vec>
+  void mark_all(Vec& entries) noexcept {
+    for (auto& e : entries) {
+      if (e.particle != nullptr) ++removed_;
+      e.particle = nullptr;
+    }
+  }
+  void compact_unless_updating() noexcept {
+    if (passes_ > 0 || removed_ == 0) return;
+    const auto erase_removed = [](auto& entries) {
+      std::erase_if(entries, [](const auto& e) { return e.particle == nullptr; });
+    };
+    std::apply([&](auto&... entries) { (erase_removed(entries), ...); }, known_);
+    erase_removed(erased_);
+    removed_ = 0;
+  }
+
+  /// Marks a pass in progress; at the end of the outermost pass, erases what it removed.
+  class Pass {
+   public:
+    explicit Pass(ForceRegistry& registry) noexcept : registry_(registry) { ++registry_.passes_; }
+    ~Pass() {
+      --registry_.passes_;
+      registry_.compact_unless_updating();
+    }
+    Pass(const Pass&) = delete;
+    Pass& operator=(const Pass&) = delete;
+
+   private:
+    ForceRegistry& registry_;
+  };
+
+  std::tuple<std::vector<Entry<Known>>...> known_;
+  std::vector<ErasedEntry> erased_;
+  std::size_t removed_ = 0;
+  int passes_ = 0;
+};
+
+}  // namespace pointmass::forces
