@@ -12,7 +12,7 @@
 //   forces/oscillator.hpp  damped_oscillator (closed form), StiffSpring (advance: exact step),
 //                          PositionOnlyStiffSpring (the reference engine's force form)
 //   forces/registry.hpp    ForceRegistry (owning and non-owning registrations)
-//   forces/detail/checks.hpp  the argument checks, through config.hpp's contract mechanism
+//   detail/validate.hpp       the argument checks (shared with Particle and ParticleSystem)
 //
 // Standard library only; must not include particle.hpp or particle_system.hpp (the generators
 // are written against the body concepts).

@@ -1,8 +1,9 @@
 // pointmass/detail/validate.hpp — the library's argument checks, written once.
 //
-// Owns: what "a valid mass", "a valid damping", "a finite vector", "a valid index", ... mean,
-// and the report each failure makes. Every public setter of Particle, ParticleSystem and the
-// force generators validates through these functions, so one rule has one wording.
+// Owns: what "a valid mass", "a valid damping", "a finite vector", "a valid index", "a force
+// in range", ... mean, and the report each failure makes. Every public setter of Particle,
+// ParticleSystem and the force generators validates through these functions, so one rule has
+// one wording.
 // Each returns true when the argument is valid; otherwise it reports a ContractViolation
 // (config.hpp) naming the function, the argument and its value, and returns false, and the
 // caller changes nothing. NaN and infinity are found by bit pattern (real.hpp), so the checks
@@ -106,6 +107,39 @@ constexpr bool check_positive(const char* function, const char* argument, R valu
 constexpr bool check_index(const char* function, std::size_t index, std::size_t size) {
   if (index < size) return true;
   report_scalar(function, "index", "< size()", index);
+  return false;
+}
+
+/// An index named `argument` into a batch of bodies 0 .. size - 1 (forces::apply_links).
+constexpr bool check_index(const char* function, const char* argument, std::size_t index,
+                           std::size_t size) {
+  if (index < size) return true;
+  report_scalar(function, argument, "< size() of the bodies", index);
+  return false;
+}
+
+/// A force generator's force from finite input: finite unless the force is beyond the range
+/// of R (docs/forces.md, "Ranges"), which is reported instead of added.
+template <Real R>
+constexpr bool check_force(const char* function, const Vector3<R>& force) {
+  if (is_finite(force)) return true;
+  report_vector(function, "force",
+                "finite: the generator's force at this body's state is beyond the range of "
+                "the number type (docs/forces.md, Ranges)",
+                force);
+  return false;
+}
+
+/// A state a closed-form step computed from finite input: finite unless beyond the range of
+/// the number type (docs/forces.md, Ranges), which is reported instead of stored.
+template <Real R>
+constexpr bool check_state(const char* function, const Vector3<R>& position,
+                           const Vector3<R>& velocity) {
+  if (is_finite(position) && is_finite(velocity)) return true;
+  report_vector(function, is_finite(position) ? "velocity" : "position",
+                "finite: the state after this step is beyond the range of the number type "
+                "(docs/forces.md, Ranges)",
+                is_finite(position) ? velocity : position);
   return false;
 }
 

@@ -14,7 +14,7 @@
 #include "../real.hpp"
 #include "../vector3.hpp"
 #include "bodies.hpp"
-#include "detail/checks.hpp"
+#include "../detail/validate.hpp"
 
 namespace pointmass::forces {
 
@@ -44,7 +44,7 @@ constexpr void update_force(G& generator, B& body, typename B::real duration) {
     generator.update_force(body, duration);
   } else {
     const auto f = generator.force(body.position(), body.velocity(), body.inverse_mass(), duration);
-    if (detail::check_force("forces::update_force", f)) body.add_force(f);
+    if (pointmass::detail::check_force("forces::update_force", f)) body.add_force(f);
   }
 }
 
@@ -60,7 +60,7 @@ constexpr void apply(const G& generator, B& bodies, typename B::real duration) {
   };
 #if POINTMASS_CHECKS
   for (std::size_t i = 0; i < n; ++i) {
-    if (!detail::check_force("forces::apply", force_on(i))) return;
+    if (!pointmass::detail::check_force("forces::apply", force_on(i))) return;
   }
 #endif
   for (std::size_t i = 0; i < n; ++i) bodies.add_force(i, force_on(i));

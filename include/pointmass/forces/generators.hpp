@@ -16,7 +16,7 @@
 #include "../real.hpp"
 #include "../vector3.hpp"
 #include "bodies.hpp"
-#include "detail/checks.hpp"
+#include "../detail/validate.hpp"
 
 namespace pointmass::forces {
 
@@ -72,7 +72,7 @@ class Gravity {
 
   constexpr Vector3<R> gravity() const noexcept { return g_; }
   constexpr void set_gravity(const Vector3<R>& g) {
-    if (detail::check_finite("Gravity::set_gravity", "gravity", g)) g_ = g;
+    if (pointmass::detail::check_finite("Gravity::set_gravity", "gravity", g)) g_ = g;
   }
 
   constexpr Vector3<R> force(const Vector3<R>&, const Vector3<R>&, R inverse_mass,
@@ -100,10 +100,10 @@ class Drag {
   constexpr R k1() const noexcept { return k1_; }
   constexpr R k2() const noexcept { return k2_; }
   constexpr void set_k1(R k1) {
-    if (detail::check_non_negative("Drag::set_k1", "k1", k1)) k1_ = k1;
+    if (pointmass::detail::check_non_negative("Drag::set_k1", "k1", k1)) k1_ = k1;
   }
   constexpr void set_k2(R k2) {
-    if (detail::check_non_negative("Drag::set_k2", "k2", k2)) k2_ = k2;
+    if (pointmass::detail::check_non_negative("Drag::set_k2", "k2", k2)) k2_ = k2;
   }
 
   constexpr Vector3<R> force(const Vector3<R>&, const Vector3<R>& v, R, R) const noexcept {
@@ -131,10 +131,10 @@ class SpringParameters {
   constexpr R stiffness() const noexcept { return k_; }
   constexpr R rest_length() const noexcept { return rest_length_; }
   constexpr void set_stiffness(R stiffness) {
-    if (detail::check_non_negative("set_stiffness", "stiffness", stiffness)) k_ = stiffness;
+    if (pointmass::detail::check_non_negative("set_stiffness", "stiffness", stiffness)) k_ = stiffness;
   }
   constexpr void set_rest_length(R rest_length) {
-    if (detail::check_non_negative("set_rest_length", "rest_length", rest_length)) {
+    if (pointmass::detail::check_non_negative("set_rest_length", "rest_length", rest_length)) {
       rest_length_ = rest_length;
     }
   }
@@ -162,7 +162,7 @@ class BasicAnchoredSpring : public SpringParameters<R, IsBungee> {
   }
   constexpr Vector3<R> anchor() const noexcept { return anchor_; }
   constexpr void set_anchor(const Vector3<R>& anchor) {
-    if (detail::check_finite("set_anchor", "anchor", anchor)) anchor_ = anchor;
+    if (pointmass::detail::check_finite("set_anchor", "anchor", anchor)) anchor_ = anchor;
   }
 
   constexpr Vector3<R> force(const Vector3<R>& p, const Vector3<R>&, R, R) const noexcept {
@@ -199,7 +199,7 @@ class BasicSpring : public SpringParameters<typename Body::real, IsBungee> {
   constexpr void update_force(B& body, real) const {
     if (other_ == nullptr) return;
     const auto f = this->force_between(body.position(), other_->position());
-    if (detail::check_force("Spring::update_force", f)) body.add_force(f);
+    if (pointmass::detail::check_force("Spring::update_force", f)) body.add_force(f);
   }
 
  private:
@@ -237,25 +237,25 @@ class Buoyancy {
   constexpr R liquid_density() const noexcept { return density_; }
   constexpr R gravity() const noexcept { return g_; }
   constexpr void set_max_depth(R max_depth) {
-    if (detail::check_positive("Buoyancy::set_max_depth", "max_depth", max_depth)) {
+    if (pointmass::detail::check_positive("Buoyancy::set_max_depth", "max_depth", max_depth)) {
       max_depth_ = max_depth;
     }
   }
   constexpr void set_volume(R volume) {
-    if (detail::check_positive("Buoyancy::set_volume", "volume", volume)) volume_ = volume;
+    if (pointmass::detail::check_positive("Buoyancy::set_volume", "volume", volume)) volume_ = volume;
   }
   constexpr void set_water_height(R water_height) {
-    if (detail::check_finite("Buoyancy::set_water_height", "water_height", water_height)) {
+    if (pointmass::detail::check_finite("Buoyancy::set_water_height", "water_height", water_height)) {
       water_height_ = water_height;
     }
   }
   constexpr void set_liquid_density(R density) {
-    if (detail::check_non_negative("Buoyancy::set_liquid_density", "liquid_density", density)) {
+    if (pointmass::detail::check_non_negative("Buoyancy::set_liquid_density", "liquid_density", density)) {
       density_ = density;
     }
   }
   constexpr void set_gravity(R g) {
-    if (detail::check_non_negative("Buoyancy::set_gravity", "g", g)) g_ = g;
+    if (pointmass::detail::check_non_negative("Buoyancy::set_gravity", "g", g)) g_ = g;
   }
 
   /// The submerged fraction s = ((h - y) / D + 1) / 2, clamped to [0, 1], at height y. (Not
@@ -304,8 +304,8 @@ constexpr void apply_links(const BasicLinkSprings<typename B::real, IsBungee>& s
                            std::span<const Link> links, B& bodies) {
   const std::size_t n = bodies.size();
   for (const Link& link : links) {
-    if (!detail::check_index("forces::apply_links", "link.first", link.first, n) ||
-        !detail::check_index("forces::apply_links", "link.second", link.second, n)) {
+    if (!pointmass::detail::check_index("forces::apply_links", "link.first", link.first, n) ||
+        !pointmass::detail::check_index("forces::apply_links", "link.second", link.second, n)) {
       return;
     }
   }
@@ -314,7 +314,7 @@ constexpr void apply_links(const BasicLinkSprings<typename B::real, IsBungee>& s
   };
 #if POINTMASS_CHECKS
   for (const Link& link : links) {
-    if (!detail::check_force("forces::apply_links", force_of(link))) return;
+    if (!pointmass::detail::check_force("forces::apply_links", force_of(link))) return;
   }
 #endif
   for (const Link& link : links) {

@@ -16,7 +16,7 @@
 #include "../real.hpp"
 #include "../vector3.hpp"
 #include "bodies.hpp"
-#include "detail/checks.hpp"
+#include "../detail/validate.hpp"
 
 namespace pointmass::forces {
 
@@ -96,16 +96,16 @@ class StiffSpringParameters {
   constexpr R stiffness() const noexcept { return k_; }
   constexpr R damping() const noexcept { return c_; }
   constexpr void set_anchor(const Vector3<R>& anchor) {
-    if (detail::check_finite("StiffSpring::set_anchor", "anchor", anchor)) anchor_ = anchor;
+    if (pointmass::detail::check_finite("StiffSpring::set_anchor", "anchor", anchor)) anchor_ = anchor;
   }
   constexpr void set_stiffness(R stiffness) {
-    if (detail::check_non_negative("StiffSpring::set_stiffness", "stiffness", stiffness)) {
+    if (pointmass::detail::check_non_negative("StiffSpring::set_stiffness", "stiffness", stiffness)) {
       k_ = stiffness;
     }
   }
   /// The damping coefficient c >= 0 (force -c v, in N s/m).
   constexpr void set_damping(R damping) {
-    if (detail::check_non_negative("StiffSpring::set_damping", "damping", damping)) c_ = damping;
+    if (pointmass::detail::check_non_negative("StiffSpring::set_damping", "damping", damping)) c_ = damping;
   }
 
   /// The exact state, relative to the world, after `duration` of this spring alone, for a
@@ -148,7 +148,7 @@ class StiffSpring : public StiffSpringParameters<R> {
 
   template <SteppableBody<R> B>
   constexpr void advance(B& body, R duration) const {
-    if (!detail::check_duration("StiffSpring::advance", duration)) return;
+    if (!pointmass::detail::check_duration("StiffSpring::advance", duration)) return;
     const R inverse_mass = body.inverse_mass();
     if (!(inverse_mass > R(0))) {
       body.clear_accumulator();
@@ -169,7 +169,7 @@ class StiffSpring : public StiffSpringParameters<R> {
                             duration);
       s.velocity += half_kick;
     }
-    if (!detail::check_state("StiffSpring::advance", s.position, s.velocity)) return;
+    if (!pointmass::detail::check_state("StiffSpring::advance", s.position, s.velocity)) return;
     body.set_position(s.position);
     body.set_velocity(s.velocity);
     body.clear_accumulator();

@@ -835,7 +835,10 @@ void fuzz_bodies(Input& in, const Generators<R>& g) {
   body.set_position(finite_vector<R>(in));
   body.set_velocity(finite_vector<R>(in));
   R inverse_mass = finite_number<R>(in, R(1));
-  body.set_inverse_mass(inverse_mass < R(0) ? -inverse_mass : inverse_mass);
+  if (inverse_mass < R(0)) inverse_mass = -inverse_mass;
+  // A subnormal inverse mass is refused (its mass() would be infinite): 0 stands for it.
+  if (inverse_mass < std::numeric_limits<R>::min()) inverse_mass = R(0);
+  body.set_inverse_mass(inverse_mass);
   body.set_acceleration(finite_vector<R>(in));
   expect_accepted("body setup");
   const R t = finite_number<R>(in);

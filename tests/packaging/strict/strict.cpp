@@ -21,9 +21,9 @@ R run() {
   particle.set_mass(R(2));
   if constexpr (pm::Particle<R, D, P>::stores_damping) particle.set_damping(R(0.9));
   const pm::forces::Gravity<R> gravity(pm::gravity<R>());
-  gravity.update_force(particle, R(0.01));
+  pm::forces::update_force(gravity, particle, R(0.01));
   const pm::forces::AnchoredSpring<R> spring({R(0), R(2), R(0)}, R(10), R(0.5));
-  spring.update_force(particle, R(0.01));
+  pm::forces::update_force(spring, particle, R(0.01));
   particle.integrate(R(0.01));
   particle.integrate(R(0));
   pm::ParticleSystem<R, D, P, pm::features::ForceAccumulator, pm::features::Lifetime,
