@@ -17,7 +17,9 @@
 # 4. draws the plots with gnuplot and writes the tables into docs/performance.md.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev gnuplot-nox python3
+# What the configuration below needs: Boost (the development targets and the examples' Odeint
+# reference), Google Benchmark and TBB (the benchmarks), gnuplot (the plots).
+ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev libtbb-dev gnuplot-nox python3
 repetitions=${1:-5}
 [[ $repetitions =~ ^[1-9][0-9]*$ ]] || { echo "repetitions: a positive integer, not '$repetitions'" >&2; exit 2; }
 frame_rates=15,30,60,120,240,480
