@@ -9,8 +9,11 @@
 //   2. one row per variant and frame time: the error against the scene's own motion, drag
 //      included (the closed form for the ballistic shots, Boost.Odeint for the spring;
 //      tests/support/accuracy.hpp), largest over the scene, in metres; the time per
-//      particle-step; and whether the row is on the Pareto front (no other row is both
-//      faster and more accurate). A variant that ignores the drag is charged for it.
+//      particle-step; the time to simulate the scene's whole span with it (time per step
+//      times the steps the span takes at that frame time: what a user pays for that error);
+//      and whether the row is on the Pareto front of error against that time (no other row
+//      simulates the span both faster and more accurately). A variant that ignores the drag
+//      is charged for it.
 // Times are measured here with a steady clock (median of repetitions): rough on a busy
 // machine. `--times FILE` takes them instead from a CSV "variant,ns_per_step" (what
 // scripts/sweep.sh makes from the Google Benchmark run, for the plot in docs/performance.md).
@@ -19,6 +22,7 @@
 //                       [--times FILE] [--csv FILE] [--summary-only] [--quick]
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
@@ -50,12 +54,20 @@ struct Row {
   double frame_time;
   double error;        // metres
   double ns_per_step;  // per particle-step
+  double us_per_span;  // to simulate the scene's span, one particle: ns_per_step x steps
   bool on_front = false;
 };
 
 std::vector<accuracy::Scene> scenes_named(const std::string& name) {
   if (name == "spring") return {accuracy::spring(false, 10), accuracy::spring(true, 10)};
   return accuracy::ballistic_scenes();
+}
+
+/// The scene's span: the longest duration among its scenes, s.
+double scenes_span(const std::vector<accuracy::Scene>& scenes) {
+  double span = 0;
+  for (const auto& s : scenes) span = std::max(span, s.duration);
+  return span;
 }
 
 template <Real R>
@@ -111,7 +123,8 @@ void measure_variants(const Options& options, const std::vector<accuracy::Scene>
         const auto flown = accuracy::simulate<R, D, P>(s, h, steps);
         error = std::max(error, accuracy::global_error(flown, reference).position);
       }
-      rows.push_back({variant, h, error, ns});
+      const double steps = static_cast<double>(std::lround(scenes_span(scenes) / h));
+      rows.push_back({variant, h, error, ns, ns * steps / 1000});
     }
   });
 }
@@ -119,8 +132,8 @@ void measure_variants(const Options& options, const std::vector<accuracy::Scene>
 void mark_pareto_front(std::vector<Row>& rows) {
   for (auto& row : rows) {
     row.on_front = std::none_of(rows.begin(), rows.end(), [&](const Row& other) {
-      return other.ns_per_step <= row.ns_per_step && other.error <= row.error &&
-             (other.ns_per_step < row.ns_per_step || other.error < row.error);
+      return other.us_per_span <= row.us_per_span && other.error <= row.error &&
+             (other.us_per_span < row.us_per_span || other.error < row.error);
     });
   }
 }
@@ -196,15 +209,18 @@ int main(int argc, char** argv) {
   measure_variants<double>(options, scenes, rows);
   mark_pareto_front(rows);
 
-  std::printf("## every variant: error (largest over the %s scenes, m) and time per particle-step\n\n",
-              options.scene.c_str());
-  std::printf("%-38s %8s %11s %9s  %s\n", "variant (Real Damping + Position)", "frame", "error (m)",
-              "ns/step", "front");
+  std::printf("## every variant: error (largest over the %s scenes, m), time per particle-step,\n"
+              "## and time to simulate the scene's span (%g s) with one particle\n\n",
+              options.scene.c_str(), scenes_span(scenes));
+  std::printf("%-38s %8s %11s %9s %11s  %s\n", "variant (Real Damping + Position)", "frame",
+              "error (m)", "ns/step", "us/span", "front");
   for (const auto& row : rows) {
-    std::printf("%-38s   1/%-4.0f %11.3e %9.2f  %s\n", row.variant.c_str(), 1 / row.frame_time,
-                row.error, row.ns_per_step, row.on_front ? "*" : "");
+    std::printf("%-38s   1/%-4.0f %11.3e %9.2f %11.2f  %s\n", row.variant.c_str(),
+                1 / row.frame_time, row.error, row.ns_per_step, row.us_per_span,
+                row.on_front ? "*" : "");
   }
-  std::puts("\n* on the Pareto front: no other variant is both faster and more accurate.");
+  std::puts("\n* on the Pareto front: no other variant and frame time simulates the span both\n"
+            "  faster and more accurately.");
   std::puts(options.times.empty()
                 ? "Times: steady clock, median of repetitions on this machine (rough)."
                 : "Times: from the given benchmark results.");
@@ -216,10 +232,11 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "cannot write %s\n", options.csv_path);
       return 1;
     }
-    std::fprintf(csv, "scene,variant,frame_time,error_m,ns_per_step,on_front\n");
+    std::fprintf(csv, "scene,variant,frame_time,error_m,ns_per_step,us_per_span,on_front\n");
     for (const auto& row : rows) {
-      std::fprintf(csv, "%s,%s,%.17g,%.6e,%.4f,%d\n", options.scene.c_str(), row.variant.c_str(),
-                   row.frame_time, row.error, row.ns_per_step, row.on_front ? 1 : 0);
+      std::fprintf(csv, "%s,%s,%.17g,%.6e,%.4f,%.4f,%d\n", options.scene.c_str(),
+                   row.variant.c_str(), row.frame_time, row.error, row.ns_per_step,
+                   row.us_per_span, row.on_front ? 1 : 0);
     }
     std::fclose(csv);
   }

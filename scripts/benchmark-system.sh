@@ -6,10 +6,13 @@
 # Usage: scripts/benchmark-system.sh [repetitions]
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-ensure_packages cmake ninja-build g++ libbenchmark-dev libtbb-dev python3
+# What the configuration below needs: Boost (the project's development targets), Google
+# Benchmark and TBB (the benchmarks); tests and examples are not configured.
+ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev libtbb-dev python3
 repetitions=${1:-15}
 build="$POINTMASS_ROOT/build/benchmark-system"
 cmake -S "$POINTMASS_ROOT" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DPOINTMASS_BUILD_TESTS=OFF -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_BENCHMARKS=ON \
   -DCMAKE_CXX_FLAGS="-march=native" >/dev/null
 cmake --build "$build" --target system_step >/dev/null
 json=$(mktemp)
@@ -18,7 +21,7 @@ trap 'rm -f "$json"' EXIT
   --benchmark_enable_random_interleaving=true --benchmark_min_time=0.05 \
   --benchmark_report_aggregates_only=true --benchmark_format=json >"$json"
 tables="$build/tables.md"
-python3 - "$json" >"$tables" <<'PY'
+python3 - "$json" "$repetitions" >"$tables" <<'PY'
 import json, sys
 data = json.load(open(sys.argv[1]))
 rate = {b["run_name"]: b["items_per_second"] / 1e6
@@ -26,7 +29,8 @@ rate = {b["run_name"]: b["items_per_second"] / 1e6
 ctx = data["context"]
 print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; "
       f"{ctx.get('library_build_type', '')} Google Benchmark; medians of "
-      f"{sys.argv[0] and ''}interleaved repetitions, M particle-steps/s.\n")
+      f"{sys.argv[2]} interleaved repetitions (`scripts/benchmark-system.sh {sys.argv[2]}`), "
+      "M particle-steps/s.\n")
 for real in ("float", "double"):
     print(f"### {real}\n")
     print("| loop | 1,000 | 100,000 | 10,000,000 |\n|---|---|---|---|")

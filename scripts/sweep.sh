@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Run time against error, for every compile-time variant: regenerates the plots
+# Work-precision diagrams (time to simulate a scene's span against error), for every
+# compile-time variant: regenerates the plots
 # docs/images/pareto-ballistic.svg and docs/images/pareto-spring.svg and the section of
 # docs/performance.md between <!-- sweep:begin --> and <!-- sweep:end -->.
 #
@@ -13,11 +14,15 @@
 #    build/sweep/variant_steps.json), then writes the time of each variant per scene as
 #    "variant,ns_per_step" (build/sweep/times-ballistic.csv, times-spring.csv);
 # 3. runs accuracy_comparison on both scenes at 1/15 .. 1/480 s with those times (CSV in
-#    build/sweep/pareto-ballistic.csv, pareto-spring.csv; it marks the Pareto front);
-# 4. draws the plots with gnuplot and writes the tables into docs/performance.md.
+#    build/sweep/pareto-ballistic.csv, pareto-spring.csv; the time to simulate the span is
+#    the time per step times the steps; it marks the Pareto front on that time);
+# 4. draws the work-precision diagrams with gnuplot and writes the tables into
+#    docs/performance.md.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev gnuplot-nox python3
+# What the configuration below needs: Boost (the development targets and the examples' Odeint
+# reference), Google Benchmark and TBB (the benchmarks), gnuplot (the plots).
+ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev libtbb-dev gnuplot-nox python3
 repetitions=${1:-5}
 [[ $repetitions =~ ^[1-9][0-9]*$ ]] || { echo "repetitions: a positive integer, not '$repetitions'" >&2; exit 2; }
 frame_rates=15,30,60,120,240,480
@@ -66,77 +71,97 @@ for scene in ballistic spring; do
 done
 fi
 
-# Plot: one point per variant and frame time; colour = frame time, shape = position policy,
-# open = float, filled = double; the Pareto front as a line, its points numbered and listed.
+# The work-precision diagram of a scene: x = error against the scene's own motion, y = time
+# to simulate the scene's span with one particle (time per step x steps), both log scales.
+# One line per variant through its frame times (halving the step moves a point along its own
+# line: up in time, and left in error while the method, not rounding, limits it); colour =
+# damping policy,
+# marker = position policy, float dashed with open markers, double solid with filled ones.
+# The Pareto front (no other variant and frame time simulates the span both faster and more
+# accurately) is the black staircase; each of its points is numbered and named in the list.
+# Opaque white background with dark text and lines, so it reads the same on light and dark
+# pages.
 plot() {  # plot SCENE TERMINAL OUTPUT
-  local scene=$1 terminal=$2 output=$3 csv="$build/pareto-$1.csv" title
-  case "$scene" in
-    ballistic) title="Ballistic shots (5 s): error against time per step, every variant and frame time" ;;
-    spring) title="Mass on a spring (10 s): error against time per step, every variant and frame time" ;;
-  esac
-  python3 - "$csv" "$build/plot-$scene.dat" "$build/plot-$scene.gp" <<'PY'
+  local scene=$1 terminal=$2 output=$3 csv="$build/pareto-$1.csv"
+  python3 - "$csv" "$scene" "$terminal" "$output" >"$build/plot-$scene.gp" <<'PY'
 import csv, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
-shape = {"Euler": 0, "Kinematic": 1, "SemiImplicit": 2, "Exact": 3}
-front = sorted((r for r in rows if r["on_front"] == "1"), key=lambda r: float(r["ns_per_step"]))
-with open(sys.argv[2], "w") as out:
-    # index 0: every row (ns, error, frames per second, shape, filled); index 1: the front
-    for r in rows:
-        real, rest = r["variant"].split(" ", 1)
-        out.write(f'{r["ns_per_step"]} {r["error_m"]} {round(1 / float(r["frame_time"]))} '
-                  f'{shape[rest.split(" + ")[1]]} {1 if real == "double" else 0}\n')
-    out.write("\n\n")
-    for r in front:
-        out.write(f'{r["ns_per_step"]} {r["error_m"]}\n')
-with open(sys.argv[3], "w") as out:  # numbers beside the front's points, and their list
-    lines = ["Pareto front (fastest first):"]
-    for k, r in enumerate(front, 1):
-        dy = 0.9 if k % 2 else -0.9
-        out.write(f'set label "{k}" at {r["ns_per_step"]},{r["error_m"]} offset 0.7,{dy} '
-                  'front font ",10" tc rgb "black"\n')
-        lines.append(f'{k}  {r["variant"]}, 1/{round(1 / float(r["frame_time"]))} s')
-    out.write('set label "' + "\\n".join(lines) +
-              '" at screen 0.745, screen 0.40 left font ",10"\n')
+path, scene, terminal, output = sys.argv[1:5]
+rows = list(csv.DictReader(open(path)))
+colour = {"None": "#E69F00", "PerFrame": "#56B4E9", "PerSecond": "#009E73",
+          "AccelerateThenDamp": "#CC79A7", "Exact": "#0072B2"}
+marker = {"Euler": 4, "Kinematic": 6, "SemiImplicit": 8, "Exact": 12}  # open; +1 filled
+marker_name = {"Euler": "square", "Kinematic": "circle", "SemiImplicit": "triangle",
+               "Exact": "diamond"}
+title = {"ballistic": "Ballistic shots (pistol, artillery, fireball, laser; 5 s)",
+         "spring": "Mass on a spring (period 1 s, undamped and damped; 10 s)"}[scene]
+variants = {}
+for r in rows:
+    variants.setdefault(r["variant"], []).append(r)
+front = sorted((r for r in rows if r["on_front"] == "1"), key=lambda r: float(r["error_m"]))
+def rate(r):
+    return round(1 / float(r["frame_time"]))
+rates = sorted({rate(r) for r in rows})
+print(f'set terminal {terminal}')
+print(f'set output "{output}"')
+print(f'set title "{title}\\ntime to simulate the span against error, frame times 1/{rates[0]} .. '
+      f'1/{rates[-1]} s" font ",14"')
+print('set xlabel "largest position error against the scene\'s motion (m)"')
+print('set ylabel "time to simulate the span, one particle (µs)"')
+print('set logscale xy')
+print('set format x "10^{%L}"')
+print('set grid xtics ytics mxtics mytics lc rgb "#d0d0d0" lw 1')
+print('set border lc rgb "#202020"')
+print('set key outside right top box opaque spacing 1.15 font ",12"')
+print('set rmargin at screen 0.68')
+print('set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05')
+print('set style textbox opaque fc rgb "white" noborder margins 1,1')
+# The front's points, numbered beside them, and listed under the key.
+lines = ["Pareto front, most accurate first:"]
+for k, r in enumerate(front, 1):
+    dy = 0.9 if k % 2 else -0.9  # alternate above and below, so neighbours do not collide
+    print(f'set label {k} "{k}" at {r["error_m"]},{r["us_per_span"]} offset 0.9,{dy} front '
+          'boxed font ",12" tc rgb "black"')
+    lines.append(f'{k:>2}  {r["variant"]}, 1/{rate(r)} s')
+print(f'set label {len(front) + 1} "' + "\\n".join(lines) +
+      '" at screen 0.695, screen 0.40 left font ",11" tc rgb "black"')
+clauses = []
+for variant, points in variants.items():
+    points.sort(key=lambda r: float(r["frame_time"]), reverse=True)
+    real, pair = variant.split(" ", 1)
+    damping, position = pair.split(" + ")
+    filled = 1 if real == "double" else 0
+    clauses.append(
+        f"'-' using 1:2 with linespoints lc rgb \"{colour[damping]}\" lw {2 if filled else 1.5} "
+        f"dt {1 if filled else 2} pt {marker[position] + filled} ps 1.3 notitle")
+# the front: a staircase through its points (most accurate first)
+clauses.append("'-' using 1:2 with steps lc rgb \"black\" lw 2.5 title \"Pareto front\"")
+for damping, c in colour.items():
+    clauses.append(f'NaN with lines lc rgb "{c}" lw 3 title "damping::{damping}"')
+for position, pt in marker.items():
+    clauses.append(f'NaN with points pt {pt + 1} ps 1.3 lc rgb "#404040" '
+                   f'title "position::{position} ({marker_name[position]})"')
+clauses.append('NaN with linespoints dt 1 lw 2 pt 7 lc rgb "#404040" title "double: solid, filled"')
+clauses.append('NaN with linespoints dt 2 lw 1.5 pt 6 lc rgb "#404040" title "float: dashed, open"')
+print("plot " + ", \\\n     ".join(clauses))
+for variant, points in variants.items():
+    for r in points:
+        print(f'{r["error_m"]} {r["us_per_span"]}')
+    print("e")
+for r in front:
+    print(f'{r["error_m"]} {r["us_per_span"]}')
+print("e")
 PY
-  gnuplot <<GNUPLOT
-set terminal $terminal
-set output "$output"
-set title "$title"
-set xlabel "time per particle-step (ns, log scale; measured at 1/60 s, the same at every frame time)"
-set ylabel "largest position error (m, log scale)"
-set logscale xy
-set format y "10^{%L}"
-set grid xtics ytics mxtics mytics lc rgb "#dddddd"
-set key outside right top box
-set rmargin at screen 0.74
-set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
-colour(rate) = rate == 15 ? 0xd62728 : rate == 30 ? 0xff7f0e : rate == 60 ? 0xbcbd22 : \
-               rate == 120 ? 0x2ca02c : rate == 240 ? 0x1f77b4 : 0x9467bd
-# point types: open/filled square, circle, triangle, diamond
-pt(shape, filled) = (shape == 0 ? 4 : shape == 1 ? 6 : shape == 2 ? 8 : 12) + filled
-data = "$build/plot-$scene.dat"
-load "$build/plot-$scene.gp"
-plot for [rate in "15 30 60 120 240 480"] data index 0 \
-       using 1:(\$3 == rate ? \$2 : 1/0):(pt(\$4, \$5)) with points pt variable ps 1.1 \
-       lc rgb colour(rate + 0) notitle, \
-     data index 1 using 1:2 with steps lw 2 lc rgb "black" title "Pareto front", \
-     for [rate in "15 30 60 120 240 480"] NaN with points pt 7 ps 1.1 \
-       lc rgb colour(rate + 0) title "frame time 1/".rate." s", \
-     NaN with points pt 4 lc rgb "black" title "float (open)", \
-     NaN with points pt 5 lc rgb "black" title "double (filled)", \
-     NaN with points pt 5 lc rgb "gray" title "Euler: square", \
-     NaN with points pt 7 lc rgb "gray" title "Kinematic: circle", \
-     NaN with points pt 9 lc rgb "gray" title "SemiImplicit: triangle", \
-     NaN with points pt 13 lc rgb "gray" title "Exact: diamond"
-GNUPLOT
+  gnuplot "$build/plot-$scene.gp"
 }
 
 mkdir -p "$images"
 for scene in ballistic spring; do
-  plot "$scene" 'svg size 1200,650 dynamic font "sans,12"' "$images/pareto-$scene.svg"
+  plot "$scene" 'svg size 1280,760 dynamic background rgb "white" font "sans,13"' \
+    "$images/pareto-$scene.svg"
   echo "wrote $images/pareto-$scene.svg"
   if [[ -n ${SWEEP_PNG:-} ]]; then  # a PNG copy to look at, e.g. SWEEP_PNG=/tmp
-    plot "$scene" 'pngcairo size 1200,650 font "sans,10"' "$SWEEP_PNG/pareto-$scene.png"
+    plot "$scene" 'pngcairo size 1280,760 background rgb "white" font "sans,11"' \
+      "$SWEEP_PNG/pareto-$scene.png"
   fi
 done
 
@@ -164,14 +189,17 @@ titles = {"ballistic": "Ballistic shots (`pareto-ballistic.svg`)",
           "spring": "Mass on a spring (`pareto-spring.svg`)"}
 for scene in ("ballistic", "spring"):
     out.append(f"#### Pareto front: {titles[scene]}\n")
-    out.append("| variant | frame time (s) | error (m) | ns per step | / hand-written |")
-    out.append("|---|---|---|---|---|")
+    out.append("Numbered as in the diagram, most accurate first; the front is taken on the time "
+               "to simulate the span.\n")
+    out.append("| # | variant | frame time (s) | error (m) | ns per step | µs for the span "
+               "| / hand-written |")
+    out.append("|---|---|---|---|---|---|---|")
     front = sorted((r for r in rows[scene] if r["on_front"] == "1"),
-                   key=lambda r: float(r["ns_per_step"]))
-    for r in front:
+                   key=lambda r: float(r["error_m"]))
+    for k, r in enumerate(front, 1):
         t = float(r["ns_per_step"])
-        out.append(f"| {r['variant']} | {frame(r)} | {float(r['error_m']):.2e} | {t:.2f} | "
-                   f"{t / base(scene, r['variant']):.1f} |")
+        out.append(f"| {k} | {r['variant']} | {frame(r)} | {float(r['error_m']):.2e} | {t:.2f} | "
+                   f"{float(r['us_per_span']):.3g} | {t / base(scene, r['variant']):.1f} |")
     out.append("")
 
 out.append("#### Error at each frame time (m, largest over the scene)\n")

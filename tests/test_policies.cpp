@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <pointmass/pointmass.hpp>
@@ -61,7 +62,7 @@ TEST_CASE_TEMPLATE_DEFINE("many steps match a loop of the exact discrete equatio
   particle.set_position({R(0), R(1.5), R(0)});
   particle.set_velocity({R(0), R(30), R(40)});
   particle.set_acceleration({R(0), R(-20), R(0)});
-  if constexpr (C::particle::stores_damping) particle.set_damping(R(0.99));
+  if constexpr (C::particle::stores_damping) particle.set_damping(R(0.99L));  // as the oracle's d
   const long double d = C::particle::stores_damping ? 0.99L : 1.0L;
 
   test::OracleState state{{0, 1.5L, 0}, {0, 30, 40}};
@@ -83,6 +84,38 @@ TEST_CASE_TEMPLATE_DEFINE("many steps match a loop of the exact discrete equatio
   CHECK(close(particle.velocity(), vec<R>(state.v), ulps, R(50)));
 }
 TEST_CASE_TEMPLATE_APPLY(many_steps_id, test::AllCombinations);
+
+// The phi series' length follows the significand, not the size of the type: a 64-bit
+// x87 long double and a 113-bit quad one have the same size but need 14 and 22 terms.
+static_assert(detail::phi_terms_for(std::numeric_limits<float>::digits) == 7);
+static_assert(detail::phi_terms_for(std::numeric_limits<double>::digits) == 12);
+static_assert(detail::phi_terms_for(64) == 14 && detail::phi_terms_for(113) == 22);
+static_assert(detail::phi_terms<long double> == detail::phi_terms_for(std::numeric_limits<long double>::digits));
+
+TEST_CASE_TEMPLATE("the phi series reach their type's precision on |x| < 1/4", R, float, double,
+                   long double) {
+  // Against the series summed directly in long double from its smallest term, 40 terms (the
+  // omitted rest below 4^-40 / 41!): within 4 ulps of R, long double included.
+  const auto oracle = [](long double x, int offset) {
+    long double term = 1;
+    for (int n = 2; n <= offset; ++n) term /= n;  // 1 / offset!
+    long double terms[40];
+    for (int n = 0; n < 40; ++n) {
+      terms[n] = term;
+      term = term * x / static_cast<long double>(n + offset + 1);
+    }
+    long double sum = 0;
+    for (int n = 39; n >= 0; --n) sum += terms[n];
+    return sum;
+  };
+  for (int i = -25; i <= 25; ++i) {
+    const R x = R(i) / R(101);
+    INFO("x = ", static_cast<double>(x));
+    const long double wide = static_cast<long double>(x);
+    CHECK(close(detail::phi_series<1>(x), static_cast<R>(oracle(wide, 1)), R(4)));
+    CHECK(close(detail::phi_series<2>(x), static_cast<R>(oracle(wide, 2)), R(4)));
+  }
+}
 
 TEST_CASE_TEMPLATE("values worked out by hand", R, float, double) {
   // v0 = (1, 2, 3), a = (0, -10, 0), p0 = (10, 20, 30), d = 0.5, t = 0.5;

@@ -34,6 +34,7 @@
 #pragma once
 
 #include <concepts>
+#include <limits>
 #include <type_traits>
 #include <utility>
 
@@ -43,10 +44,22 @@
 
 namespace pointmass::detail {
 
-/// How many terms of the phi series reach R's precision for |x| < 1/4: the first omitted
-/// term, 4^-n / (n + 2)!, is below a quarter of an ulp (float 7, double 12, long double 14).
+/// How many terms of the phi series reach a precision of `digits` bits for |x| < 1/4: the
+/// fewest n for which the first omitted term of phi_1, 4^-n / (n + 1)!, is below 2^-(digits + 2),
+/// a quarter of an ulp of 1 (24 digits: 7, 53: 12, 64: 14, 113: 22).
+constexpr int phi_terms_for(int digits) noexcept {
+  double limit = 0.25;
+  for (int i = 0; i < digits; ++i) limit /= 2;
+  double term = 1;  // 4^-n / (n + 1)! at n = 0
+  int n = 0;
+  while (!(term < limit)) {
+    ++n;
+    term /= 4.0 * (n + 1);
+  }
+  return n;
+}
 template <class R>
-inline constexpr int phi_terms = sizeof(R) == sizeof(float) ? 7 : sizeof(R) == sizeof(double) ? 12 : 14;
+inline constexpr int phi_terms = phi_terms_for(std::numeric_limits<R>::digits);
 
 /// 1 / (n + Offset)! for n = 0 .. phi_terms<R> - 1 (a plain array: usable in device code).
 template <class R>

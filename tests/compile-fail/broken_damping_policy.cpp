@@ -1,16 +1,20 @@
-// A damping policy without a velocity update does not satisfy DampingPolicy.
-// expected-error: (DampingPolicy<D>)
-// expected-error: does not satisfy 'DampingPolicy'
+// A damping policy with everything but its velocity update (damping::None without
+// velocity) does not satisfy DampingPolicy, and the requirement named is the velocity.
+// expected-error: D::velocity(vf, vf, tf, D::factors(
+// expected-error: no member named 'velocity' in 'NoVelocityUpdate'
 #include <pointmass/particle.hpp>
 
 struct NoVelocityUpdate {
-  template <class R>
+  static constexpr int order = 1;
+  static constexpr bool exact_for_constant_acceleration = true;
+  template <pointmass::Real R>
   struct State {
-    R value() const { return R(1); }
+    static constexpr R value() noexcept { return R(1); }
   };
-  template <class R, class T>
-  static int factors(const State<R>&, const T&) {
-    return 0;
+  struct Factors {};
+  template <pointmass::Real R, class T>
+  static constexpr Factors factors(const State<R>&, const T&) noexcept {
+    return {};
   }
 };
 

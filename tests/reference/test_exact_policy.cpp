@@ -54,17 +54,20 @@ Scene as_stored(Scene s) {
 
 /// Relative tolerance for R: 1e-12 for double; for float, the rounding of
 /// about 8 operations a step over N steps, N 8 eps (and at least 8 eps for one step), since
-/// each exact step only rounds.
+/// each exact step only rounds. For long double the same N 8 eps of its own, plus the
+/// reference's rounding to double (its samples are doubles): 2 double epsilons.
 template <class R>
 double tolerance(long steps) {
   if constexpr (std::is_same_v<R, double>) return 1e-12;
-  return 8.0 * static_cast<double>(std::numeric_limits<float>::epsilon()) * static_cast<double>(steps);
+  const double rounding = 8.0 * static_cast<double>(std::numeric_limits<R>::epsilon()) * static_cast<double>(steps);
+  if constexpr (std::is_same_v<R, long double>) return rounding + 2 * std::numeric_limits<double>::epsilon();
+  return rounding;
 }
 
 }  // namespace
 
 TEST_CASE_TEMPLATE("the exact pair matches the closed form at every frame time and damping", R,
-                   float, double) {
+                   float, double, long double) {
   for (Scene shot : ballistic_scenes()) {
     for (const double d : damping_values) {
       shot.damping = d;

@@ -11,6 +11,7 @@
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <pointmass/damping.hpp>
@@ -281,50 +282,109 @@ inline double observed_order(double error_h, double error_half) {
   return std::log2(error_h / error_half);
 }
 
-/// A bound on the global position error of a first-order combination at frame time h,
-/// derived from its local truncation error (see docs/accuracy.md, "How the test bounds are
-/// derived"). Every first-order combination's local error per step, to leading order, is
-/// at most
-///   position  h^2/2 (|a| + |k| V)        velocity  h^2/2 (|a'| + |k| |a|)
-/// with a the resulting acceleration (without damping), a' its rate of change (a spring
-/// changes it), k the damping rate and V, P the largest speed and distance. The factor 2
-/// covers the O(h^3) remainder at the frame times used (omega h, |k| h < 0.25).
-///   Without a spring: the velocity error decays (k <= 0) and reaches the position through
-///   the remaining time, so |e_p(T)| <= N (tau_p + tau_v T) = T h/2 (A + |k| V + (A' + |k| A) T).
-///   With a spring: in the norm max(omega |p|, |v|) the model is Lipschitz with
-///   L = sqrt(2) (omega + |k| + c/m), so |e| <= tau (e^{LT} - 1) / (L h), and |e_p| <= |e| / omega.
-inline double first_order_bound(const Scene& s, double k, const Extent& x, double h) {
-  const double omega = s.angular_frequency();
-  const double friction = s.friction / s.mass;
-  const double speed = x.velocity, distance = x.position;
-  const double acceleration = magnitude(s.gravity) + omega * omega * distance + friction * speed;
-  const double jerk = omega * omega * speed + friction * (acceleration + std::abs(k) * speed);
-  const double tau_p = h * h / 2 * (acceleration + std::abs(k) * speed);
-  const double tau_v = h * h / 2 * (jerk + std::abs(k) * acceleration);
-  const double T = s.duration;
-  if (!s.has_spring()) return 2 * (T / h) * (tau_p + tau_v * T);
-  const double L = std::sqrt(2.0) * (omega + std::abs(k) + friction);
-  const double tau = std::max(omega * tau_p, tau_v) * std::sqrt(2.0);
-  return 2 * tau * std::expm1(L * T) / (L * h) / omega;
+// --- convergence bounds ------------------------------------------------------------------------
+//
+// The error of a combination of order p at frame time h is C h^p plus higher-order terms. As
+// Boost.Odeint's own convergence tests do (libs/numeric/odeint/test/numeric/runge_kutta.cpp),
+// C is calibrated at the coarsest step h0 and every finer step is held to
+//   e(h) <= M e(h0) (h / h0)^p,   M = convergence_margin = 2.
+// Why 2: a pre-asymptotic error may still lose up to a factor M of its constant as the step
+// shrinks (an observed order down to p - log2(M) / 3 over the three halvings from 1/30 to
+// 1/240 s), but a method of order p - 1 (a wrong formula that no longer follows the model to
+// order p) has e(h0 / 4) = 4 e(h0) (1/4)^p, twice the bound, and fails at the second halving.
+// The observed order of each halving is held separately (order_tolerance).
+
+inline constexpr double convergence_margin = 2;
+
+/// Every halving's observed order is within order_tolerance of the pair's order_v...
+inline constexpr double order_tolerance = 0.1;
+/// ...except on a spring scene while the explicit forms' energy growth omega^2 h T / 2 exceeds
+/// pre_asymptotic_growth (the 1 s spring at 1/30 and 1/60 s: 0.66 and 0.33), where the error
+/// still shrinks faster than h^p: there the order may exceed p by up to pre_asymptotic_excess.
+/// The finest halving is always held to order_tolerance.
+inline constexpr double pre_asymptotic_growth = 0.2;
+inline constexpr double pre_asymptotic_excess = 0.3;
+
+/// The bound on the error at step h, from the error at the coarsest step h0 (see above).
+inline double convergence_bound(double coarse_error, double coarse_h, double h, int order) {
+  return convergence_margin * coarse_error * std::pow(h / coarse_h, order);
 }
 
-/// A bound on the extra position error of a float run over a double one, N steps:
-/// each step rounds the position update (p + v h, up to three operations and the rounding of
-/// h itself) by at most 4 eps (|p| + |v| h), and the velocity update (v d^t + a t, with powf's
-/// error of at most 2 ulps) by at most 6 eps (|v| + |a| h); a velocity error made at step n
-/// moves the position by at most that error times the time left. Summed without cancellation:
-///   N (4 eps (P + V h) + 6 eps (V + A h) T),   eps = 2^-23.
-/// With a spring the errors also feed back through the force: multiply by e^{L T} as above.
-inline double float_rounding_bound(const Scene& s, double k, const Extent& x, double h) {
-  const double eps = static_cast<double>(std::numeric_limits<float>::epsilon());
+/// The interval the observed order of the halving from h to h / 2 must lie in, for a pair of
+/// order p on scene s; `finest` is true for the last halving tried.
+struct OrderInterval {
+  double low = 0, high = 0;
+};
+inline OrderInterval order_interval(const Scene& s, double h, int order, bool finest) {
+  const double growth = s.stiffness / s.mass * h * s.duration / 2;
+  const double excess = s.has_spring() && growth > pre_asymptotic_growth && !finest
+                            ? pre_asymptotic_excess : order_tolerance;
+  return {order - order_tolerance, order + excess};
+}
+
+/// The one-step map's linear part in (p, v) along one axis: the double step of combination
+/// (D, P) on scene s without its constant acceleration, from (1, 0) and (0, 1). Every step is
+/// affine in (p, v) with the same linear part on each axis (the spring and friction forces are
+/// linear, and the constant acceleration only adds), so a perturbation e of the state grows
+/// into M^k e after k more steps.
+struct StepMatrix {
+  double pp = 1, pv = 0, vp = 0, vv = 1;
+};
+template <class D, class P>
+StepMatrix step_matrix(const Scene& s, double h) {
+  Scene linear = s;
+  linear.gravity = {};
+  const auto image = [&](const Vector3<double>& p, const Vector3<double>& v) {
+    auto particle = make_particle<double, D, P>(linear, h);
+    particle.set_position(p);
+    particle.set_velocity(v);
+    step(particle, linear, h);
+    return std::pair{particle.position().x, particle.velocity().x};
+  };
+  const auto [pp, vp] = image({1, 0, 0}, {});
+  const auto [pv, vv] = image({}, {1, 0, 0});
+  return {pp, pv, vp, vv};
+}
+
+/// A bound on how far a float run's positions move from the double run's, over the scene at
+/// frame time h. Each rounded operation errs by at most u = 2^-24 of its result. A step rounds
+/// the position update (p + v h and the a h^2 / 2 term: the product, the sums, and h itself)
+/// by at most r_p = 4 u (P + V h), and the velocity update (v d^t + a t: the damping factor,
+/// whose powf or expm1 is within 2 ulps = 4 u, its product, the force and a t, the sum) by at
+/// most r_v = 8 u (V + A h), with P, V, A the largest distance, speed and acceleration. An
+/// error made k steps before the end has moved the position by (M^k)_pp r_p + (M^k)_pv r_v
+/// (M the step's own linear part, step_matrix), so, the rounding of the start values included
+/// (k = N) and summed without cancellation,
+///   R = sum_{k <= N} |(M^k)_pp| r_p + |(M^k)_pv| r_v.
+/// Without a spring (M^k)_pv is at most k h (a velocity error carried for the time left);
+/// with one M^k follows the method's own energy growth, not a Lipschitz estimate of the model.
+/// Roundings mostly cancel, so the float runs' observed distance from the double runs stays
+/// well below R.
+template <class D, class P>
+double float_rounding_bound(const Scene& s, const Extent& x, double h) {
+  const double u = static_cast<double>(std::numeric_limits<float>::epsilon()) / 2;
   const double omega = s.angular_frequency();
-  const double friction = s.friction / s.mass;
-  const double acceleration = magnitude(s.gravity) + omega * omega * x.position + friction * x.velocity;
-  const double T = s.duration, N = T / h;
-  double bound = N * (4 * eps * (x.position + x.velocity * h) +
-                      6 * eps * (x.velocity + acceleration * h) * T);
-  if (s.has_spring()) bound *= std::exp(std::sqrt(2.0) * (omega + std::abs(k) + friction) * T);
-  return bound;
+  const double acceleration = magnitude(s.gravity) + omega * omega * x.position +
+                              s.friction / s.mass * x.velocity;
+  const double round_p = 4 * u * (x.position + x.velocity * h);
+  const double round_v = 8 * u * (x.velocity + acceleration * h);
+  const StepMatrix m = step_matrix<D, P>(s, h);
+  StepMatrix power;  // M^k
+  double sum_pp = 0, sum_pv = 0;
+  for (long k = 0; k <= steps_for(s, h); ++k) {
+    sum_pp += std::abs(power.pp);
+    sum_pv += std::abs(power.pv);
+    power = {m.pp * power.pp + m.pv * power.vp, m.pp * power.pv + m.pv * power.vv,
+             m.vp * power.pp + m.vv * power.vp, m.vp * power.pv + m.vv * power.vv};
+  }
+  return sum_pp * round_p + sum_pv * round_v;
+}
+
+/// Rounding of the double runs of an exact combination: a few ulps per step of the largest
+/// value, over N steps (N eps (P + V T) with 8 eps per step, as in float_rounding_bound).
+inline double double_rounding_bound(const Extent& x, double T, double h) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  return (T / h) * 8 * eps * (x.position + x.velocity * T);
 }
 
 // --- energy and stability --------------------------------------------------------------------

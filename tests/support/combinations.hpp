@@ -36,8 +36,9 @@ using CombinationsOf =
            std::tuple<Combination<R, damping::Exact, position::Exact>,
                       Combination<R, damping::None, position::Exact>>>;
 
-/// All 34 combinations: float and double, 17 each.
-using AllCombinations = Concat<CombinationsOf<float>, CombinationsOf<double>>;
+/// All 51 combinations: float, double and long double, 17 each.
+using AllCombinations =
+    Concat<CombinationsOf<float>, CombinationsOf<double>, CombinationsOf<long double>>;
 
 /// One step of the model in long double, from the equations (SPEC.md):
 /// d is the damping value, t the step, a the resulting acceleration.

@@ -23,6 +23,8 @@ using pointmass::test::same_bits;
 
 // Per-second damping that counts how often its per-step factors (the power function) run.
 struct CountingPerSecond {
+  static constexpr int order = 1;
+  static constexpr bool exact_for_constant_acceleration = false;
   template <Real R>
   using State = damping::StoredDamping<R>;
   template <Real R>
