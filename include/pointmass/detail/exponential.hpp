@@ -147,6 +147,16 @@ POINTMASS_HD constexpr R mask_select(typename ExpTraits<R>::bits mask, R if_set,
                                          (std::bit_cast<B>(if_clear) & ~mask)));
 }
 
+/// a < b ? if_less : otherwise, per element without a branch (masks for float and double).
+template <Real R>
+POINTMASS_HD constexpr R select_if_less(R a, R b, R if_less, R otherwise) noexcept {
+  if constexpr (std::is_same_v<R, long double>) {
+    return a < b ? if_less : otherwise;
+  } else {
+    return mask_select(less_mask(a, b), if_less, otherwise);
+  }
+}
+
 /// A number split into a high part of half the significand and the rest: hi + lo == x.
 template <class R>
 POINTMASS_HD constexpr R split_high(R x) noexcept {
