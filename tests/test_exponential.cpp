@@ -75,14 +75,17 @@ TEST_CASE_TEMPLATE("d^t and d^t - 1 are within 4 ulp of long double's for d in [
 TEST_CASE_TEMPLATE("d^t is exact at the ends: 0, 1, and t = 0", R, float, double, long double) {
   const auto zero = detail::split_log(R(0));
   const auto one = detail::split_log(R(1));
-  for (const R t : {std::numeric_limits<R>::denorm_min(), R(1e-30), R(1) / R(60), R(1), R(10)}) {
+  // d = 0 gives 0 from t = 2^-89 s on (float; double 2^-950 s): a finite stand-in for ln 0.
+  R shortest = R(0x1p-89);
+  if constexpr (!std::is_same_v<R, float>) shortest = R(0x1p-950);
+  for (const R t : {shortest, R(1e-25), R(1) / R(60), R(1), R(10), R(1e9)}) {
     CAPTURE(t);
     CHECK(detail::pow_unit(zero, t) == R(0));
     CHECK(detail::pow_unit(one, t) == R(1));
     const auto none = detail::exp_unit(zero, t);
     CHECK(none.kept == R(0));
     CHECK(none.kept_minus_one == R(-1));
-    CHECK(none.exponent == -std::numeric_limits<R>::infinity());
+    CHECK(none.exponent <= R(-104));
     const auto all = detail::exp_unit(one, t);
     CHECK(all.kept == R(1));
     CHECK(all.kept_minus_one == R(0));

@@ -105,10 +105,12 @@ class LogDamping {
   constexpr LogDamping() noexcept = default;
   POINTMASS_HD explicit LogDamping(R d) noexcept : value_(d), log_(detail::split_log(d)) {}
   POINTMASS_HD constexpr R value() const noexcept { return value_; }
-  /// ln d as hi + lo (detail::split_log): hi = -infinity for d = 0, both 0 for d = 1.
+  /// ln d as hi + lo (detail::split_log): both 0 for d = 1, a huge negative hi for d = 0.
   POINTMASS_HD constexpr const detail::SplitLog<R>& split_log() const noexcept { return log_; }
   /// k = ln d, the damping rate per second (<= 0; -infinity for d = 0).
-  POINTMASS_HD constexpr R log_value() const noexcept { return log_.hi + log_.lo; }
+  POINTMASS_HD constexpr R log_value() const noexcept {
+    return value_ > R(0) ? log_.hi + log_.lo : -real_infinity<R>;
+  }
 
  private:
   R value_ = R(1);
@@ -257,13 +259,21 @@ struct Exact {
   /// particles with their own damping vectorises.
   template <Real R, class T>
   POINTMASS_HD static constexpr Factors<R> factors(const State<R>& state, const T& t) noexcept {
-    // x = k t: -infinity when d = 0 (then d^t - 1 = -1, and phi1 = -1 / x = 0, phi2 = 0
-    // follow); zero when d = 1 or t = 0, and nothing is taken away: phi1 = 1, phi2 = 1/2.
+    // x = k t <= 0: zero when d = 1 or t = 0, and nothing is taken away: phi1 = 1,
+    // phi2 = 1/2. Every branch is computed and the right one selected, on inputs that raise
+    // no floating-point exception (no 0 / 0, no series of a huge x).
     const detail::UnitPower<R> power = detail::exp_unit(state.split_log(), in_seconds(t));
     const R x = power.exponent;
-    const R phi1 = detail::select_if_less(x, R(0), power.kept_minus_one / x, R(1));
-    const R phi2 = detail::select_if_less(R(-0.25), x, detail::phi_series<2>(x), (phi1 - R(1)) / x);
-    return {power.kept, phi1, phi2};
+    const R divisor = detail::select_if_less(x, R(0), x, R(-1));
+    const R phi1 = detail::select_if_less(x, R(0), power.kept_minus_one / divisor, R(1));
+    const R series_x = detail::select_if_less(R(-0.25), x, x, R(0));
+    const R phi2 = detail::select_if_less(R(-0.25), x, detail::phi_series<2>(series_x),
+                                          (phi1 - R(1)) / divisor);
+    // d = 0 keeps nothing, not even this step's push: the limit k -> -infinity (phi1 = -1 / x
+    // would leave a tiny remainder of t ln 0's finite stand-in).
+    const R d = state.value();
+    return {power.kept, detail::select_if_less(R(0), d, phi1, R(0)),
+            detail::select_if_less(R(0), d, phi2, R(0))};
   }
   template <class V, class A, class T, class R>
   POINTMASS_HD static constexpr V velocity(const V& v0, const A& a, const T& t,

@@ -73,6 +73,7 @@ struct ExpTraits<float> {
   static constexpr float x_max = 89.0f;             ///< e^89 > FLT_MAX: overflows
   static constexpr int series_terms = 6;            ///< 1/2! .. 1/7!
   static constexpr float expm1_exact_scale = 20.0f; ///< 2^n - 1 exact for n <= 20
+  static constexpr float log_of_zero = -0x1p96f;    ///< ln 0: t ln 0 < x_min for t >= 2^-89
 };
 
 template <>
@@ -89,6 +90,7 @@ struct ExpTraits<double> {
   static constexpr double x_max = 710.0;   ///< e^710 > DBL_MAX: overflows
   static constexpr int series_terms = 12;  ///< 1/2! .. 1/13!
   static constexpr double expm1_exact_scale = 40.0;
+  static constexpr double log_of_zero = -0x1p960;  ///< ln 0: t ln 0 < x_min for t >= 2^-950
 };
 
 /// 1 / (k + 2)!, the coefficient of r^k in (e^r - 1 - r) / r^2, computed at compile time.
@@ -180,15 +182,15 @@ struct SplitLog {
 template <Real R>
 POINTMASS_HD inline SplitLog<R> split_log(R d) noexcept {
   if (d == R(1)) return {R(0), R(0)};
-  if (!(d > R(0))) return {-real_infinity<R>, R(0)};
   if constexpr (std::is_same_v<R, long double>) {
-    return {real_log(d), R(0)};
+    return {d > R(0) ? real_log(d) : -real_infinity<R>, R(0)};
   } else {
 #if defined(__CUDA_ARCH__)
     using Wide = double;
 #else
     using Wide = std::conditional_t<std::is_same_v<R, float>, double, long double>;
 #endif
+    if (!(d > R(0))) return {ExpTraits<R>::log_of_zero, R(0)};
     const Wide wide = real_log(static_cast<Wide>(d));
     const R hi = split_high(static_cast<R>(wide));
     return {hi, static_cast<R>(wide - static_cast<Wide>(hi))};
@@ -288,11 +290,12 @@ template <class R>
 struct UnitPower {
   R kept;            ///< d^t
   R kept_minus_one;  ///< d^t - 1
-  R exponent;        ///< t ln d, rounded (-infinity for d = 0 and t > 0, 0 for t = 0)
+  R exponent;        ///< t ln d, rounded (0 for t = 0; for d = 0, t times split_log's ln 0)
 };
 
 /// d^t and d^t - 1 for d in [0, 1] (ln d from split_log) and t >= 0. Exactly 1 and 0 for
-/// t = 0 (even d = 0) and for d = 1; exactly 0 and -1 for d = 0 and t > 0.
+/// t = 0 (even d = 0) and for d = 1; exactly 0 and -1 for d = 0 and t >= 2^-89 s. Raises no
+/// floating-point exception but inexact and underflow.
 template <Real R>
 POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr UnitPower<R> exp_unit(const SplitLog<R>& ln_d, R t) noexcept {
   const bool none_taken = t == R(0);
@@ -302,20 +305,20 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr UnitPower<R> exp_unit(cons
     const R kept_minus_one = real_expm1(x);
     return {kept_minus_one + R(1), kept_minus_one, x};
   } else {
-    // d = 0 (hi = -infinity) needs no case of its own: x_hi = -infinity is clamped, and the
-    // low part (NaN when t.lo = 0) dropped.
+    // d = 0 needs no case of its own: x_hi = t ln 0 is below x_min, so clamped.
     const SplitTime<R> split = split_time(t);
     const R x_hi = split.hi * ln_d.hi;
     const R x_lo = split.lo * ln_d.hi + t * ln_d.lo;
     const ExpReduced<R> e = exp_reduce(x_hi, x_lo);
-    const R x = x_hi + mask_select(less_mask(x_hi, std::numeric_limits<R>::lowest()), R(0), x_lo);
+    const R x = x_hi + x_lo;
     return {bit_select(none_taken, R(1), exp_from(e)),
             bit_select(none_taken, R(0), expm1_from(e)), bit_select(none_taken, R(0), x)};
   }
 }
 
 /// d^t = e^(t ln d) for d in [0, 1] (ln d from split_log, computed once) and t >= 0.
-/// Exactly 1 for t = 0 (even d = 0) and for d = 1; exactly 0 for d = 0 and t > 0.
+/// Exactly 1 for t = 0 (even d = 0) and for d = 1; exactly 0 for d = 0 and t >= 2^-89 s
+/// (float; double 2^-950 s). Raises no floating-point exception but inexact and underflow.
 template <Real R>
 POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R pow_unit(const SplitLog<R>& ln_d, R t) noexcept {
   const bool none_taken = t == R(0);
