@@ -127,7 +127,8 @@ POINTMASS_HD constexpr R bit_select(bool condition, R if_true, R if_false) noexc
   }
 }
 
-/// All ones where a < b, else zero, from sign bits alone. A per-element comparison made into a
+/// All ones where a < b, else zero, from sign bits alone (and where a = -0, b = +0: use
+/// select_if_less where zeros of either sign meet). A per-element comparison made into a
 /// mask does not vectorise at g++ -O2 for double (SSE2 has no pattern for a 64-bit mask from a
 /// double comparison); a logical shift and a subtraction do. a - b and b - a are both
 /// negative or both not only when one is NaN (which propagates its sign into both): false.
@@ -150,12 +151,13 @@ POINTMASS_HD constexpr R mask_select(typename ExpTraits<R>::bits mask, R if_set,
 }
 
 /// a < b ? if_less : otherwise, per element without a branch (masks for float and double).
+/// -0 and +0 compare equal, as with `<` (less_mask alone reads -0 - +0 = -0 as "less").
 template <Real R>
 POINTMASS_HD constexpr R select_if_less(R a, R b, R if_less, R otherwise) noexcept {
   if constexpr (std::is_same_v<R, long double>) {
     return a < b ? if_less : otherwise;
   } else {
-    return mask_select(less_mask(a, b), if_less, otherwise);
+    return mask_select(less_mask(a + R(0), b + R(0)), if_less, otherwise);  // -0 + 0 = +0
   }
 }
 
