@@ -13,11 +13,16 @@ using namespace pointmass;
 // A policy that needs no state costs no storage.
 static_assert(sizeof(Particle<float, damping::None>) < sizeof(Particle<float, damping::PerSecond>));
 static_assert(sizeof(Particle<float, damping::None>) == 13 * sizeof(float));
-static_assert(sizeof(Particle<float, damping::PerSecond>) == 14 * sizeof(float));
+// Per-second damping keeps d and ln d (as hi + lo: no logarithm a step), and the last step's
+// length and factor (no exponential while the length repeats).
+static_assert(sizeof(Particle<float, damping::PerSecond>) == (13 + 3 + 2) * sizeof(float));
 static_assert(sizeof(Particle<double, damping::PerFrame, position::Kinematic>) ==
               14 * sizeof(double));
-// ln d is kept beside d, so the exact policy computes no logarithm a step.
-static_assert(sizeof(Particle<float, damping::Exact>) == 15 * sizeof(float));
+static_assert(sizeof(Particle<float, damping::AccelerateThenDamp>) == (13 + 1 + 2) * sizeof(float));
+static_assert(sizeof(Particle<float, damping::Exact>) == (13 + 3 + 4) * sizeof(float));
+static_assert(Particle<float>::caches_factors && Particle<double, damping::Exact>::caches_factors);
+static_assert(!Particle<float, damping::PerFrame>::caches_factors &&
+              !Particle<float, damping::None>::caches_factors);
 static_assert(!Particle<float, damping::None>::stores_damping);
 static_assert(Particle<float>::stores_damping);
 // The seed's defaults.
@@ -138,4 +143,38 @@ TEST_CASE("the scenes hold the reference engine's shots") {
   CHECK(p.velocity() == Vector3<double>{0, 30, 40});
   CHECK(p.mass() == 200.0);
   CHECK(p.damping() == 0.99);
+}
+
+TEST_CASE_TEMPLATE("a repeated step length reuses the damping factors, a new length or damping does not",
+                   D, damping::PerSecond, damping::AccelerateThenDamp, damping::Exact) {
+  using R = float;
+  Particle<R, D> particle;
+  const Vector3<R> a{R(0), R(-9.8f), R(1)};
+  Vector3<R> v{R(1), R(2), R(3)};
+  particle.set_velocity(v);
+  particle.set_acceleration(a);
+  // Each step against the policy's own factors computed afresh: equal bit for bit.
+  const auto step = [&](R t, R d) {
+    CAPTURE(t);
+    CAPTURE(d);
+    v = D::velocity(v, a, t, D::factors(typename D::template State<R>(d), t));
+    particle.integrate(t);
+    CHECK(particle.velocity() == v);
+  };
+  particle.set_damping(R(0.5));
+  step(R(1) / R(60), R(0.5));
+  step(R(1) / R(60), R(0.5));
+  step(R(1) / R(30), R(0.5));
+  step(R(1) / R(60), R(0.5));
+  particle.set_damping(R(0.05));
+  step(R(1) / R(60), R(0.05));
+  step(R(1) / R(60), R(0.05));
+  const Particle<R, D> copy = particle;  // a copy carries the kept factors with it
+  particle.set_damping(R(0.9));
+  step(R(1) / R(60), R(0.9));
+  Particle<R, D> other = copy;
+  other.integrate(R(1) / R(60));
+  CHECK(other.velocity() == D::velocity(copy.velocity(), a, R(1) / R(60),
+                                        D::factors(typename D::template State<R>(R(0.05)),
+                                                   R(1) / R(60))));
 }

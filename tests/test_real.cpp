@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 #include <pointmass/damping.hpp>
@@ -65,11 +66,23 @@ TEST_CASE("real_pow of floats is powf, not pow on promoted doubles") {
   CHECK(pointmass::real_pow(0.99L, 1.0L / 30) == ::powl(0.99L, 1.0L / 30));
 }
 
-TEST_CASE("the per-second factor of a float particle is powf's") {
+TEST_CASE("the listing's factor is powf's bit for bit, and eq. 3.6's is float's own exponential") {
+  // AccelerateThenDamp reproduces the reference engine, which calls powf: the same bits.
+  // PerSecond computes e^(t ln d) in float, within 4 ulp of the correctly rounded d^t
+  // (tests/test_exponential.cpp), and never promotes to double (the type is checked above).
+  using pointmass::damping::AccelerateThenDamp;
   using pointmass::damping::PerSecond;
-  const PerSecond::State<float> state(0.99f);
-  for (const float t : {1.0f / 30, 1.0f / 60, 0.25f}) {
-    CHECK(PerSecond::factors(state, t).kept == ::powf(0.99f, t));
+  for (const float d : {0.99f, 0.5f, 0.1f, 0.995f, 1e-6f, 0.0f, 1.0f}) {
+    for (const float t : {1.0f / 30, 1.0f / 60, 0.25f, 0.3f, 2.5f}) {
+      CAPTURE(d);
+      CAPTURE(t);
+      CHECK(AccelerateThenDamp::factors(AccelerateThenDamp::State<float>(d), t).kept ==
+            ::powf(d, t));
+      const float kept = PerSecond::factors(PerSecond::State<float>(d), t).kept;
+      const long double exact = std::pow(static_cast<long double>(d), static_cast<long double>(t));
+      CHECK(std::fabs(static_cast<long double>(kept) - exact) <=
+            2 * static_cast<long double>(std::numeric_limits<float>::epsilon()) * exact);
+    }
   }
 }
 

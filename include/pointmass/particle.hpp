@@ -8,7 +8,8 @@
 //
 // One step of duration t (`integrate`), as the policies compose:
 //   a  = acceleration + force_accumulator * inverse_mass     resulting acceleration
-//   f  = D::factors(damping, t)                              per-step damping factors (d^t, ...)
+//   f  = D::factors(damping, t)                              per-step damping factors (d^t, ...),
+//                                                            kept from the last step when t repeats
 //   v1 = D::velocity(v0, a, t, f)                            eq. 3.5, 3.6, listing form, none, exact
 //   p1 = P::position(p0, v0, v1, a, t, f)                    p + v0 t, + a t^2/2, p + v1 t, exact
 //   force_accumulator = 0
@@ -61,9 +62,16 @@ class BasicParticle {
   using inverse_mass_type = typename Q::inverse_mass;
   using force_type = typename Q::force;
   using damping_state = typename D::template State<real>;
+  using damping_factors = damping_factors_t<D, real>;
 
   /// True when the damping policy stores a damping value (and so has set_damping).
   static constexpr bool stores_damping = !std::is_empty_v<damping_state>;
+  /// True when the particle keeps the last step's damping factors and length, so that a step
+  /// of the same length computes no exponential or power (the fixed steps games take): the
+  /// policies whose factors depend on the step length (all but None and PerFrame). The kept
+  /// factors are what D::factors returns, so results do not change, bit for bit.
+  static constexpr bool caches_factors =
+      !std::is_empty_v<damping_factors> && !std::is_same_v<D, damping::PerFrame>;
 
   /// At rest at the origin, no acceleration, mass 1, damping 1 (none).
   constexpr BasicParticle() noexcept = default;
@@ -130,7 +138,10 @@ class BasicParticle {
                   "damps nothing); choose damping::PerSecond, PerFrame, AccelerateThenDamp or "
                   "Exact to damp");
     if constexpr (stores_damping) {  // else the static_assert has said why
-      if (detail::check_damping("set_damping", damping)) damping_ = damping_state(damping);
+      if (detail::check_damping("set_damping", damping)) {
+        damping_ = damping_state(damping);
+        if constexpr (caches_factors) cache_ = {};
+      }
     }
   }
 
@@ -167,7 +178,7 @@ class BasicParticle {
     auto p = typed<length_type>(position_);
     auto v = typed<velocity_type>(velocity_);
     if constexpr (PositionPolicyFor<P, D>) {  // else the static_assert above has said why
-      advance<D, P>(p, v, resulting_acceleration, duration, D::factors(damping_, duration));
+      advance<D, P>(p, v, resulting_acceleration, duration, step_factors(duration));
     }
     position_ = raw(p);
     velocity_ = raw(v);
@@ -175,6 +186,24 @@ class BasicParticle {
   }
 
  private:
+  /// The last step's length (-1 before the first: never a valid one) and its factors.
+  struct FactorCache {
+    real duration = real(-1);
+    damping_factors factors{};
+  };
+  struct NoFactorCache {};
+
+  /// D::factors(damping_, duration), computed again only when the length changes.
+  POINTMASS_HD constexpr damping_factors step_factors(const time_type& duration) noexcept {
+    if constexpr (caches_factors) {
+      const real t = Q::raw(duration);
+      if (!real_equal(t, cache_.duration)) cache_ = {t, D::factors(damping_, duration)};
+      return cache_.factors;
+    } else {
+      return D::factors(damping_, duration);
+    }
+  }
+
   template <class T>
   POINTMASS_HD static constexpr Vector3<T> typed(const Vector3<real>& v) noexcept {
     return {Q::template make<T>(v.x), Q::template make<T>(v.y), Q::template make<T>(v.z)};
@@ -190,6 +219,7 @@ class BasicParticle {
   Vector3<real> force_accumulator_{};
   real inverse_mass_ = real(1);
   [[no_unique_address]] damping_state damping_{};
+  [[no_unique_address]] std::conditional_t<caches_factors, FactorCache, NoFactorCache> cache_{};
 };
 
 /// The particle over plain numbers (SI units by convention: metres, seconds, kilograms).

@@ -32,6 +32,12 @@ struct ScalarOf {
 template <class T>
 using scalar_t = typename ScalarOf<T>::type;
 
+/// True for long double where it is wider than double (x87's 80 bits, or 128): the precision
+/// that calls the C library where float and double use the library's own code. Written with
+/// sizeof, so that device code, where long double is double, never names long double.
+template <class R>
+inline constexpr bool wider_than_double_v = sizeof(R) > sizeof(double);
+
 namespace detail {
 
 /// The unsigned integer of R's size and R's exponent field, for float and double.

@@ -1,0 +1,4 @@
+# engine_step compares against the reference engine's particle, whose integrate lives in its
+# own translation unit (tests/support/reference_engine.cpp).
+target_sources(engine_step PRIVATE "${PROJECT_SOURCE_DIR}/tests/support/reference_engine.cpp")
+target_include_directories(engine_step PRIVATE "${PROJECT_SOURCE_DIR}/tests/support")

@@ -1,0 +1,250 @@
+// The reference engine's own job, side by side: every particle with its own damping (0.99 per
+// second), mass and acceleration (gravity), stepped at 1/60 s, against
+//   * the engine's particle (tests/support/reference_engine.*: its 72-byte float / 144-byte
+//     double layout with padded vectors, its integrate out of line in its own translation
+//     unit, one pow per particle and step) — the baseline every ratio is taken against;
+//   * a vector of `Particle<R>` (the default policies: per-second damping, p + v t), at a
+//     fixed step and with a step length that changes every step;
+//   * a vector of `Particle<R, damping::AccelerateThenDamp, position::Euler>` (the engine's
+//     equations, the same results bit for bit: tests/reference/test_engine_replay.cpp);
+//   * a hand-written loop over a plain struct doing the default Particle's arithmetic at a
+//     fixed step (its retention d^t kept per particle, as a hand-tuned game loop would);
+//   * `ParticleSystem` configurations (BM_System, below).
+// scripts/benchmark-engine.sh runs it with interleaved repetitions and writes the table of
+// medians and ratios into docs/performance.md. Counters: items_per_second = particle-steps/s.
+#include <pointmass/particle.hpp>
+#include <pointmass/particle_system.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <vector>
+
+#include "reference_engine.hpp"
+
+namespace {
+
+using namespace pointmass;
+
+// The step, a run-time value (set in main from the argument count), so that no loop folds it.
+float float_duration = 0.0f;
+double double_duration = 0.0;
+template <class R>
+R duration() {
+  if constexpr (sizeof(R) == sizeof(float)) return float_duration;
+  else return double_duration;
+}
+// A length that changes every step: t and t (1 + 2^-10) in turn.
+template <class R>
+R varying_duration(std::int64_t step) {
+  return step % 2 == 0 ? duration<R>() : duration<R>() * (R(1) + R(1) / R(1024));
+}
+
+template <class R>
+constexpr R damping_value = R(0.99);
+
+/// Initial state of particle i, the same for every loop.
+template <class R>
+struct Start {
+  Vector3<R> position;
+  Vector3<R> velocity;
+  R mass;
+};
+template <class R>
+std::vector<Start<R>> starts(std::size_t count) {
+  std::mt19937 engine(1);
+  std::uniform_real_distribution<R> position(R(-100), R(100));
+  std::uniform_real_distribution<R> velocity(R(-10), R(10));
+  std::uniform_real_distribution<R> mass(R(0.5), R(2));
+  std::vector<Start<R>> result(count);
+  for (auto& s : result) {
+    s.position = {position(engine), position(engine), position(engine)};
+    s.velocity = {velocity(engine), velocity(engine), velocity(engine)};
+    s.mass = mass(engine);
+  }
+  return result;
+}
+template <class R>
+constexpr Vector3<R> gravity_vector{R(0), R(-9.81f), R(0)};
+
+// --- the reference engine's loop: the baseline ------------------------------------------------
+
+template <class R, bool Varying>
+void BM_Engine(benchmark::State& state) {
+  const auto count = static_cast<std::size_t>(state.range(0));
+  std::vector<reference_engine::Particle<R>> particles(count);
+  const auto s = starts<R>(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    particles[i].set_position({s[i].position.x, s[i].position.y, s[i].position.z});
+    particles[i].set_velocity({s[i].velocity.x, s[i].velocity.y, s[i].velocity.z});
+    particles[i].set_mass(s[i].mass);
+    particles[i].set_damping(damping_value<R>);
+    particles[i].set_acceleration({R(0), gravity_vector<R>.y, R(0)});
+  }
+  std::int64_t step = 0;
+  for (auto _ : state) {
+    const R t = Varying ? varying_duration<R>(step++) : duration<R>();
+    for (auto& p : particles) p.integrate(t);
+    benchmark::DoNotOptimize(particles.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
+}
+
+// --- vectors of Particle ------------------------------------------------------------------------
+
+template <class R, class D, class P, bool Varying>
+void BM_Particles(benchmark::State& state) {
+  const auto count = static_cast<std::size_t>(state.range(0));
+  std::vector<Particle<R, D, P>> particles(count);
+  const auto s = starts<R>(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    particles[i].set_position(s[i].position);
+    particles[i].set_velocity(s[i].velocity);
+    particles[i].set_mass(s[i].mass);
+    particles[i].set_damping(damping_value<R>);
+    particles[i].set_acceleration(gravity_vector<R>);
+  }
+  std::int64_t step = 0;
+  for (auto _ : state) {
+    const R t = Varying ? varying_duration<R>(step++) : duration<R>();
+    for (auto& p : particles) p.integrate(t);
+    benchmark::DoNotOptimize(particles.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
+}
+
+// --- the hand-written loop: the default Particle's arithmetic over a plain struct ---------------
+
+template <class R>
+struct HandParticle {
+  Vector3<R> position;
+  Vector3<R> velocity;
+  Vector3<R> acceleration;
+  Vector3<R> force;
+  R inverse_mass;
+  R kept;  // d^t for the fixed step, computed once
+};
+
+template <class R>
+void BM_HandStruct(benchmark::State& state) {
+  const auto count = static_cast<std::size_t>(state.range(0));
+  std::vector<HandParticle<R>> particles(count);
+  const auto s = starts<R>(count);
+  const R t = duration<R>();
+  for (std::size_t i = 0; i < count; ++i) {
+    particles[i] = {s[i].position, s[i].velocity, gravity_vector<R>, {},
+                    R(1) / s[i].mass, real_pow(damping_value<R>, t)};
+  }
+  for (auto _ : state) {
+    for (auto& p : particles) {
+      if (p.inverse_mass > R(0)) {
+        const Vector3<R> a = p.acceleration + p.force * p.inverse_mass;
+        p.position = p.position + p.velocity * t;
+        p.velocity = p.velocity * p.kept + a * t;
+      }
+      p.force = {};
+    }
+    benchmark::DoNotOptimize(particles.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
+}
+
+// --- ParticleSystem rows --------------------------------------------------------------------------
+// BM_System<Config>: the place for the batch's rows. Config::System is a ParticleSystem type;
+// the engine's job needs per-particle damping, acceleration, mass and forces (FullFeatured);
+// Lean is the system at its cheapest for the same motion (uniform damping and gravity).
+// scripts/benchmark-engine.sh reads the rows by these names.
+
+template <class R>
+struct FullFeatured {
+  using System = ParticleSystem<R, damping::PerSecond, position::Euler,
+                                features::PerParticleDamping, features::PerParticleAcceleration,
+                                features::ForceAccumulator>;
+};
+template <class R>
+struct Lean {
+  using System = ParticleSystem<R>;
+};
+
+template <class Config>
+void BM_System(benchmark::State& state) {
+  using System = typename Config::System;
+  using R = typename System::real;
+  const auto count = static_cast<std::size_t>(state.range(0));
+  System system(count);
+  const auto s = starts<R>(count);
+  for (std::size_t i = 0; i < count; ++i) system.spawn(s[i].position, s[i].velocity);
+  if constexpr (System::per_particle_damping) {
+    for (std::size_t i = 0; i < count; ++i) system.set_damping(i, damping_value<R>);
+  } else {
+    system.set_damping(damping_value<R>);
+  }
+  if constexpr (System::per_particle_acceleration) {
+    for (std::size_t i = 0; i < count; ++i) system.set_acceleration(i, gravity_vector<R>);
+  } else {
+    system.set_acceleration(gravity_vector<R>);
+  }
+  if constexpr (System::has_forces) {
+    for (std::size_t i = 0; i < count; ++i) system.set_mass(i, s[i].mass);
+  }
+  const R t = duration<R>();
+  for (auto _ : state) {
+    system.step(t);
+    benchmark::DoNotOptimize(system.position_x().data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
+}
+
+void sizes(benchmark::internal::Benchmark* b) {
+  for (const long n : {1024L, 100000L, 1000000L}) b->Arg(n);
+}
+
+#define POINTMASS_ENGINE_BENCHMARKS(R)                                                           \
+  BENCHMARK(BM_Engine<R, false>)->Apply(sizes);                                                  \
+  BENCHMARK(BM_Engine<R, true>)->Apply(sizes);                                                   \
+  BENCHMARK(BM_Particles<R, damping::PerSecond, position::Euler, false>)->Apply(sizes);          \
+  BENCHMARK(BM_Particles<R, damping::PerSecond, position::Euler, true>)->Apply(sizes);           \
+  BENCHMARK(BM_Particles<R, damping::AccelerateThenDamp, position::Euler, false>)->Apply(sizes); \
+  BENCHMARK(BM_Particles<R, damping::AccelerateThenDamp, position::Euler, true>)->Apply(sizes);  \
+  BENCHMARK(BM_HandStruct<R>)->Apply(sizes);                                                     \
+  BENCHMARK(BM_System<FullFeatured<R>>)->Apply(sizes);                                           \
+  BENCHMARK(BM_System<Lean<R>>)->Apply(sizes)
+
+POINTMASS_ENGINE_BENCHMARKS(float);
+POINTMASS_ENGINE_BENCHMARKS(double);
+
+/// The loops must move the particles, or their times mean nothing.
+template <class R>
+bool step_moves_particles() {
+  Particle<R> particle;
+  particle.set_velocity({R(1), R(0), R(0)});
+  particle.integrate(duration<R>());
+  reference_engine::Particle<R> theirs;
+  theirs.set_velocity({R(1), R(0), R(0)});
+  theirs.integrate(duration<R>());
+  return particle.position().x > R(0) && theirs.position().x > R(0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // 1/60 s, computed at run time from the program's arguments' count (always >= 1).
+  float_duration = 1.0f / (60.0f * static_cast<float>(argc > 0 ? 1 : 2));
+  double_duration = 1.0 / (60.0 * (argc > 0 ? 1 : 2));
+  if (!step_moves_particles<float>() || !step_moves_particles<double>()) {
+    std::fputs("engine_step: a step did not move the particles; the timings would be void\n",
+               stderr);
+    return 1;
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
