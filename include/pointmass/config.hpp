@@ -51,6 +51,21 @@
 #define POINTMASS_CHECKS 0
 #endif
 
+// The one-definition rule across settings. Functions that check hot-path preconditions are
+// compiled differently with POINTMASS_CHECKS on and off, so the library's declarations live
+// in an inline namespace named after the setting: a translation unit with checks on and one
+// with checks off define different functions (pointmass::checks_on::Particle<...>::integrate
+// and pointmass::checks_off::...), and one program may mix them, each behaving as its own
+// setting says (tests/odr/ proves it). User code names everything pointmass::X, as before;
+// only the contract handler (below) is shared by the whole program. Objects passed between
+// translation units of different settings are of different types: keep one setting per
+// interface.
+#if POINTMASS_CHECKS
+#define POINTMASS_ABI_NAMESPACE checks_on
+#else
+#define POINTMASS_ABI_NAMESPACE checks_off
+#endif
+
 // Whether this compilation pass checks hot-path preconditions: POINTMASS_CHECKS on the host;
 // never in device code (a GPU kernel has no contract handler to call). Decided here once;
 // call sites write `#if POINTMASS_HOST_CHECKS`.
@@ -100,19 +115,25 @@ inline std::string describe(const ContractViolation& violation) {
 #endif
 }
 
-namespace detail {
+// The installed handler: one for the whole program, whatever each translation unit's
+// POINTMASS_CHECKS (so it stays outside the inline namespace below).
+namespace shared_state {
 inline std::atomic<ContractHandler> contract_handler{&default_contract_handler};
-}  // namespace detail
+}  // namespace shared_state
 
 /// Installs `handler` (nullptr restores the default) and returns the one it replaces.
 inline ContractHandler set_contract_handler(ContractHandler handler) noexcept {
-  return detail::contract_handler.exchange(handler != nullptr ? handler
+  return shared_state::contract_handler.exchange(handler != nullptr ? handler
                                                                : &default_contract_handler);
 }
 
-inline ContractHandler contract_handler() noexcept { return detail::contract_handler.load(); }
+inline ContractHandler contract_handler() noexcept {
+  return shared_state::contract_handler.load();
+}
 
-namespace detail {
+}  // namespace pointmass
+
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 // Appends x, in the shortest form that reads back as the same T, to text at *used.
 template <class T>
@@ -161,5 +182,4 @@ template <class V>
   report(violation, used);
 }
 
-}  // namespace detail
-}  // namespace pointmass
+}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail

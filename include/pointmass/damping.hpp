@@ -48,7 +48,7 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
-namespace pointmass::detail {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 /// How many terms of the phi series reach a precision of `digits` bits for |x| < 1/4: the
 /// fewest n for which the first omitted term of phi_1, 4^-n / (n + 1)!, is below 2^-(digits + 2),
@@ -96,7 +96,7 @@ POINTMASS_HD constexpr R phi_series(R x) noexcept {
 
 }  // namespace pointmass::detail
 
-namespace pointmass::damping {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::damping {
 
 /// A damping value d in [0, 1]; the states of the policies that store one.
 template <Real R>
@@ -297,7 +297,7 @@ struct Exact {
 
 }  // namespace pointmass::damping
 
-namespace pointmass {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// A damping policy: a State<R> made from a damping value, per-step factors, and a velocity
 /// update over vectors of R (checked for float, double and long double). A policy states its

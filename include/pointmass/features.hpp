@@ -17,7 +17,7 @@
 #include "damping.hpp"
 #include "real.hpp"
 
-namespace pointmass::features {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::features {
 
 /// Each particle has its own damping value (set_damping(i, d)).
 struct PerParticleDamping {};
@@ -33,7 +33,7 @@ using Forces [[deprecated("renamed features::ForceAccumulator")]] = ForceAccumul
 
 }  // namespace pointmass::features
 
-namespace pointmass {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// The arrays a ParticleSystem's block can hold, for `system.column<Column::age>()`; in the
 /// order of the table in detail::SystemLayout.

@@ -10,7 +10,7 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
-namespace pointmass {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 template <Real R>
 inline constexpr R earth_gravity = R(9.807);  ///< m/s^2, the scientific mean

@@ -21,7 +21,7 @@
 
 #include "particle_system.hpp"
 
-namespace pointmass {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 namespace detail {
 

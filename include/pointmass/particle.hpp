@@ -29,7 +29,7 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
-namespace pointmass {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// One step of the model on one body's values, the damping factors already computed.
 /// Generic arithmetic: p and v may be Vector3s or single components (the batch form steps

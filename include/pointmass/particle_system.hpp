@@ -82,7 +82,7 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
-namespace pointmass {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 template <Real R, DampingPolicy D = damping::PerSecond, class P = position::Euler,
           class... Features>

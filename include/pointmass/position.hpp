@@ -32,7 +32,7 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
-namespace pointmass::position {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::position {
 
 /// The text's short form: p1 = p0 + v0 t, with the velocity from the start of the step.
 /// Local error a t^2 / 2; first order. The cheapest update.
@@ -123,7 +123,7 @@ struct Exact {
 
 }  // namespace pointmass::position
 
-namespace pointmass {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// True when the pair (D, P) steps exactly along the continuous model for constant
 /// acceleration at any step length (its error is rounding only): (None, Kinematic),

@@ -13,7 +13,7 @@
 #include "config.hpp"
 #include "real.hpp"
 
-namespace pointmass {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 template <Real R>
 struct PlainQuantities {

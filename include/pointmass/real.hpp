@@ -18,7 +18,7 @@
 
 #include "config.hpp"
 
-namespace pointmass {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// The precisions the library computes in.
 template <class T>
@@ -175,7 +175,7 @@ inline constexpr R real_infinity = std::numeric_limits<R>::infinity();
 
 }  // namespace pointmass
 
-namespace pointmass {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// How a duration type converts to a number of seconds; units.hpp specialises it for
 /// Boost.Units times. A plain Real duration is already a number of seconds.

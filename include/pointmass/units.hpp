@@ -58,7 +58,7 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
-namespace pointmass::units {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::units {
 
 namespace bu = ::boost::units;
 
@@ -254,7 +254,7 @@ class Particle : public BasicParticle<SiQuantities<R>, D, P> {
 
 }  // namespace pointmass::units
 
-namespace pointmass {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// A Vector3 of numbers times a unit is a Vector3 of quantities:
 /// `Vector3<double>{0, 30, 40} * si::meters_per_second`. (More specialised than both

@@ -22,7 +22,7 @@
 #include "config.hpp"
 #include "real.hpp"
 
-namespace pointmass {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 template <class T>
 struct Vector3;

@@ -53,7 +53,7 @@
 #define POINTMASS_DETAIL_ALWAYS_INLINE
 #endif
 
-namespace pointmass::detail {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 /// What the exponential needs of each precision (float and double).
 template <class R>

@@ -22,7 +22,7 @@
 
 #include "../config.hpp"
 
-namespace pointmass::detail {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 template <class Layout>
 class SoaBlock {

@@ -45,7 +45,7 @@
 #define POINTMASS_DETAIL_INLINE
 #endif
 
-namespace pointmass::detail {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 struct NoFactors {};
 

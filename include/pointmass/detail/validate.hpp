@@ -20,7 +20,7 @@
 #include "../real.hpp"
 #include "../vector3.hpp"
 
-namespace pointmass::detail {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 /// A vector with three finite components.
 template <Real R>

@@ -10,7 +10,7 @@
 #include "../real.hpp"
 #include "../vector3.hpp"
 
-namespace pointmass::scenes {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::scenes {
 
 /// One of the reference engine's ballistic shots: launched from `origin` with `velocity`,
 /// under constant `acceleration` (its gravity), with per-second `damping`.

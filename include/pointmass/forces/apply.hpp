@@ -16,7 +16,7 @@
 #include "bodies.hpp"
 #include "../detail/validate.hpp"
 
-namespace pointmass::forces {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::forces {
 
 /// A generator that computes a body's force from its own state alone.
 template <class G, class R>

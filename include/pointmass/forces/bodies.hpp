@@ -15,7 +15,7 @@
 #include "../real.hpp"
 #include "../vector3.hpp"
 
-namespace pointmass::forces {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::forces {
 
 /// A particle over plain R numbers (Particle<R, D, P> for any policies D, P).
 template <class B, class R>

@@ -18,7 +18,7 @@
 #include "bodies.hpp"
 #include "../detail/validate.hpp"
 
-namespace pointmass::forces {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::forces {
 
 namespace detail {
 

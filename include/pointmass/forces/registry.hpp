@@ -18,7 +18,7 @@
 
 #include "apply.hpp"
 
-namespace pointmass::forces {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::forces {
 
 /// What a registry can hold for particles of type P.
 template <class G, class P>
