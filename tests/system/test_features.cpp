@@ -22,10 +22,8 @@ using pointmass::test::random_vector;
 using pointmass::test::same_bits;
 
 // Per-second damping that counts how often its per-step factors (the power function) run.
+// (It states no order or exactness: a user's policy need not, and is taken as first order.)
 struct CountingPerSecond {
-  static constexpr int order = damping::PerSecond::order;
-  static constexpr bool exact_for_constant_acceleration =
-      damping::PerSecond::exact_for_constant_acceleration;
   template <Real R>
   using State = damping::PerSecond::State<R>;
   template <Real R>
