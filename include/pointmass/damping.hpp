@@ -325,7 +325,7 @@ concept DampingPolicy = requires(const Vector3<float>& vf, float tf, const Vecto
 namespace detail {
 /// A policy's stated `order`, or 1.
 template <class Policy>
-consteval int stated_order() {
+constexpr int stated_order() {
   if constexpr (requires { Policy::order; }) return Policy::order;
   else return 1;
 }
