@@ -224,6 +224,17 @@ struct PerSecond {
       return {detail::pow_unit(state.split_log(), in_seconds(t))};
     }
   }
+  /// The same factors, bit for bit, for one particle at a time (Particle::integrate): the
+  /// exponential with a branch on its range (detail::pow_unit_scalar) instead of selects.
+  template <Real R, class T>
+  POINTMASS_HD static constexpr Factors<R> scalar_factors(const State<R>& state,
+                                                          const T& t) noexcept {
+    if constexpr (wider_than_double_v<R>) {
+      return factors(state, t);
+    } else {
+      return {detail::pow_unit_scalar(state.split_log(), in_seconds(t))};
+    }
+  }
   template <class V, class A, class T, class R>
   POINTMASS_HD static constexpr V velocity(const V& v0, const A& a, const T& t,
                                            const Factors<R>& f) noexcept {
@@ -345,6 +356,19 @@ template <class Policy>
 consteval int stated_order() {
   if constexpr (requires { Policy::order; }) return Policy::order;
   else return 1;
+}
+}  // namespace detail
+
+namespace detail {
+/// D::scalar_factors(state, t) where the policy has one (the same bits as D::factors,
+/// written for one particle at a time: a Particle's step), else D::factors(state, t).
+template <class D, class State, class T>
+POINTMASS_HD constexpr auto scalar_factors(const State& state, const T& t) noexcept {
+  if constexpr (requires { D::scalar_factors(state, t); }) {
+    return D::scalar_factors(state, t);
+  } else {
+    return D::factors(state, t);
+  }
 }
 }  // namespace detail
 
