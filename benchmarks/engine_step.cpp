@@ -154,6 +154,76 @@ void BM_HandStruct(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
 }
 
+// The same data as the default Particle<R> and the same arithmetic: what "a hand-written struct
+// loop of the same arithmetic" means in docs/performance.md. It holds what a Particle must to
+// take any damping and any step length (d and ln d as hi + lo, the last step's length and d^t)
+// and does, per particle, the Particle's step: compare the length with the kept one (computing
+// d^t with the library's exponential when it differs), then a = acceleration + force * inverse
+// mass, p += v t, v = v d^t + a t, force = 0. BM_HandStruct (above) is the leaner struct a
+// game would write for one fixed step (d^t kept, 56 bytes in float): the price of the bytes.
+template <class R>
+struct HandSameData {
+  Vector3<R> position;
+  Vector3<R> velocity;
+  Vector3<R> acceleration;
+  Vector3<R> force;
+  R inverse_mass;
+  R damping;
+  detail::SplitLog<R> log_damping;
+  R kept_duration;
+  R kept;
+};
+static_assert(sizeof(HandSameData<float>) == sizeof(Particle<float>));
+static_assert(sizeof(HandSameData<double>) == sizeof(Particle<double>));
+
+template <class R>
+void BM_HandSameData(benchmark::State& state) {
+  const auto count = static_cast<std::size_t>(state.range(0));
+  std::vector<HandSameData<R>> particles(count);
+  const auto s = starts<R>(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    particles[i] = {s[i].position, s[i].velocity, gravity_vector<R>, {},
+                    R(1) / s[i].mass, damping_value<R>, detail::split_log(damping_value<R>),
+                    R(-1), R(1)};
+  }
+  const R t = duration<R>();
+  for (auto _ : state) {
+    for (auto& p : particles) {
+      if (p.inverse_mass > R(0)) {
+        if (!real_equal(p.kept_duration, t)) {
+          p.kept = detail::pow_unit_scalar(p.log_damping, t);
+          p.kept_duration = t;
+        }
+        const Vector3<R> a = p.acceleration + p.force * p.inverse_mass;
+        p.position = p.position + p.velocity * t;
+        p.velocity = p.velocity * p.kept + a * t;
+      }
+      p.force = {};
+    }
+    benchmark::DoNotOptimize(particles.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
+}
+
+// --- memory bounds: read-modify-write over the same bytes -------------------------------------
+
+// Every byte of `Bytes` per particle read and written once a step (a step of a vector of
+// particles rewrites every cache line it reads): the bound of a vector of such particles.
+template <class R, std::size_t Bytes>
+void BM_BandwidthBytes(benchmark::State& state) {
+  const auto count = static_cast<std::size_t>(state.range(0));
+  std::vector<R> data(count * Bytes / sizeof(R), R(1));
+  const R c = duration<R>();
+  for (auto _ : state) {
+    R* __restrict d = data.data();
+    for (std::size_t i = 0; i < data.size(); ++i) d[i] += c;
+    benchmark::DoNotOptimize(data.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
+}
+
 // --- ParticleSystem rows --------------------------------------------------------------------------
 // BM_System<Config>: the place for the batch's rows. Config::System is a ParticleSystem type;
 // the engine's job needs per-particle damping, acceleration, mass and forces (FullFeatured);
@@ -170,6 +240,65 @@ template <class R>
 struct Lean {
   using System = ParticleSystem<R>;
 };
+// The full-featured system's other arrays with one damping for all: what per-particle damping
+// costs is FullFeatured against this.
+template <class R>
+struct UniformDampingFeatured {
+  using System = ParticleSystem<R, damping::PerSecond, position::Euler,
+                                features::PerParticleAcceleration, features::ForceAccumulator>;
+};
+
+// The full-featured system's memory traffic with trivial arithmetic: every array it reads (16:
+// position, velocity, acceleration, inverse mass, force, d and ln d's two parts) read, the 9 it
+// writes (position, velocity, force) written, in its own block: the bound of its step.
+template <class R>
+void BM_BandwidthFullFeatured(benchmark::State& state) {
+  using System = typename FullFeatured<R>::System;
+  const auto count = static_cast<std::size_t>(state.range(0));
+  System system(count);
+  for (std::size_t i = 0; i < count; ++i) system.spawn({}, {});
+  const auto& a = system.arrays();
+  const R c = duration<R>();
+  for (auto _ : state) {
+    R* __restrict px = a.position_x;
+    R* __restrict py = a.position_y;
+    R* __restrict pz = a.position_z;
+    R* __restrict vx = a.velocity_x;
+    R* __restrict vy = a.velocity_y;
+    R* __restrict vz = a.velocity_z;
+    R* __restrict fx = a.force_x;
+    R* __restrict fy = a.force_y;
+    R* __restrict fz = a.force_z;
+    const R* __restrict ax = a.acceleration_x;
+    const R* __restrict ay = a.acceleration_y;
+    const R* __restrict az = a.acceleration_z;
+    const R* __restrict im = a.inverse_mass;
+    const R* __restrict d = a.damping;
+    const R* __restrict hi = a.damping_log_hi;
+    const R* __restrict lo = a.damping_log_lo;
+#if defined(__clang__)
+#pragma clang loop vectorize(assume_safety)
+#elif defined(__GNUC__)
+#pragma GCC ivdep
+#endif
+    for (std::size_t i = 0; i < count; ++i) {
+      const R k = (ax[i] + ay[i]) + (az[i] + im[i]) + ((d[i] + hi[i]) + lo[i]) +
+                  ((fx[i] + fy[i]) + fz[i]);
+      px[i] += c * k;
+      py[i] += c * k;
+      pz[i] += c * k;
+      vx[i] += k;
+      vy[i] += k;
+      vz[i] += k;
+      fx[i] = R(0);
+      fy[i] = R(0);
+      fz[i] = R(0);
+    }
+    benchmark::DoNotOptimize(a.position_x);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
+}
 
 template <class Config>
 void BM_System(benchmark::State& state) {
@@ -213,8 +342,13 @@ void sizes(benchmark::internal::Benchmark* b) {
   BENCHMARK(BM_Particles<R, damping::AccelerateThenDamp, position::Euler, false>)->Apply(sizes); \
   BENCHMARK(BM_Particles<R, damping::AccelerateThenDamp, position::Euler, true>)->Apply(sizes);  \
   BENCHMARK(BM_HandStruct<R>)->Apply(sizes);                                                     \
+  BENCHMARK(BM_HandSameData<R>)->Apply(sizes);                                                   \
   BENCHMARK(BM_System<FullFeatured<R>>)->Apply(sizes);                                           \
-  BENCHMARK(BM_System<Lean<R>>)->Apply(sizes)
+  BENCHMARK(BM_System<UniformDampingFeatured<R>>)->Apply(sizes);                                 \
+  BENCHMARK(BM_System<Lean<R>>)->Apply(sizes);                                                   \
+  BENCHMARK(BM_BandwidthFullFeatured<R>)->Arg(1000000);                                          \
+  BENCHMARK(BM_BandwidthBytes<R, sizeof(Particle<R>)>)->Arg(1000000);                            \
+  BENCHMARK(BM_BandwidthBytes<R, sizeof(HandParticle<R>)>)->Arg(1000000)
 
 POINTMASS_ENGINE_BENCHMARKS(float);
 POINTMASS_ENGINE_BENCHMARKS(double);

@@ -46,10 +46,20 @@ for real in ("float", "double"):
              f"BM_Particles<{real}, damping::AccelerateThenDamp, position::Euler, false>", engine),
             ("`Particle<R, AccelerateThenDamp, Euler>`, step length changing every step",
              f"BM_Particles<{real}, damping::AccelerateThenDamp, position::Euler, true>", engine_varying),
-            ("hand-written struct loop, the defaults' arithmetic, fixed step", f"BM_HandStruct<{real}>", engine),
+            ("hand-written struct loop, the Particle's data and step, fixed step",
+             f"BM_HandSameData<{real}>", engine),
+            ("hand-written lean struct loop (d^t kept, nothing else), fixed step", f"BM_HandStruct<{real}>", engine),
             ("`ParticleSystem`, per-particle damping, acceleration, mass and forces",
              f"BM_System<FullFeatured<{real}>>", engine),
-            ("`ParticleSystem<R>` (lean: uniform damping and gravity)", f"BM_System<Lean<{real}>>", engine)]
+            ("`ParticleSystem`, the same with uniform damping",
+             f"BM_System<UniformDampingFeatured<{real}>>", engine),
+            ("`ParticleSystem<R>` (lean: uniform damping and gravity)", f"BM_System<Lean<{real}>>", engine),
+            ("memory bound: read-modify-write of the full-featured system's arrays",
+             f"BM_BandwidthFullFeatured<{real}>", engine),
+            ("memory bound: read-modify-write of a vector of `Particle<R>`'s bytes",
+             f"BM_BandwidthBytes<{real}, sizeof(Particle<{real}>)>", engine),
+            ("memory bound: read-modify-write of the lean struct's bytes",
+             f"BM_BandwidthBytes<{real}, sizeof(HandParticle<{real}>)>", engine)]
     for label, name, base in rows:
         cells = []
         for n in sizes:
@@ -60,21 +70,45 @@ for real in ("float", "double"):
                 cells.append("")
         print(f"| {label} | " + " | ".join(cells) + " |")
     def ratio(a, b, n):
-        return rate[f"{a}/{n}"] / rate[f"{b}/{n}"]
+        key, base_key = f"{a}/{n}", f"{b}/{n}"
+        return rate[key] / rate[base_key] if key in rate and base_key in rate else None
     particles = f"BM_Particles<{real}, damping::PerSecond, position::Euler, false>"
     print("\n| ratio | 1,024 | 100,000 | 1,000,000 | target |\n|---|---|---|---|---|")
-    def line(label, a, b, target):
-        print(f"| {label} | " + " | ".join(f"{ratio(a, b, n):.2f}" for n in sizes) + f" | {target} |")
+    def line(label, a, b, target, at=sizes):
+        cells = []
+        for n in sizes:
+            r = ratio(a, b, n) if n in at else None
+            cells.append("" if r is None else f"{r:.2f}")
+        print(f"| {label} | " + " | ".join(cells) + f" | {target} |")
     line("`Particle<R>` fixed step / engine", particles, engine,
          ">= 2.5 (float, 1,024 and 100,000); >= 2 (double)")
     line("`Particle<R>` changing step / engine changing step",
          f"BM_Particles<{real}, damping::PerSecond, position::Euler, true>", engine_varying, ">= 1.0")
-    line("`Particle<R>` fixed step / hand-written struct loop", particles, f"BM_HandStruct<{real}>",
-         ">= 0.97 (time <= 1.03x)")
-    line("`Particle<R, AccelerateThenDamp, Euler>` / engine",
+    line("`Particle<R>` fixed step / hand-written loop, the Particle's data and step", particles,
+         f"BM_HandSameData<{real}>", ">= 0.97 (time <= 1.03x)")
+    line("`Particle<R>` fixed step / hand-written lean struct loop", particles, f"BM_HandStruct<{real}>",
+         "(the price of the bytes)")
+    line("`Particle<R, AccelerateThenDamp, Euler>` fixed step / engine",
          f"BM_Particles<{real}, damping::AccelerateThenDamp, position::Euler, false>", engine, ">= 1.0")
+    line("`Particle<R, AccelerateThenDamp, Euler>` changing step / engine changing step",
+         f"BM_Particles<{real}, damping::AccelerateThenDamp, position::Euler, true>", engine_varying,
+         "(not a target)")
     line("full-featured system / engine", f"BM_System<FullFeatured<{real}>>", engine,
          ">= 10, 4, 2 (float); >= 5, 2 (double)")
+    line("full-featured system / the same with uniform damping", f"BM_System<FullFeatured<{real}>>",
+         f"BM_System<UniformDampingFeatured<{real}>>", ">= 0.67 at 100,000 (cost <= 1.5x)")
+    big = ("1000000",)
+    line("full-featured system / its memory bound", f"BM_System<FullFeatured<{real}>>",
+         f"BM_BandwidthFullFeatured<{real}>", "(1 = at the bound)", big)
+    line("its memory bound / engine", f"BM_BandwidthFullFeatured<{real}>", engine,
+         "(the most the system can reach)", big)
+    line("`Particle<R>` fixed step / its memory bound", particles,
+         f"BM_BandwidthBytes<{real}, sizeof(Particle<{real}>)>", "(1 = at the bound)", big)
+    line("hand-written lean struct loop / its memory bound", f"BM_HandStruct<{real}>",
+         f"BM_BandwidthBytes<{real}, sizeof(HandParticle<{real}>)>", "(1 = at the bound)", big)
+    line("`Particle<R>`'s bound / the lean struct's bound",
+         f"BM_BandwidthBytes<{real}, sizeof(Particle<{real}>)>",
+         f"BM_BandwidthBytes<{real}, sizeof(HandParticle<{real}>)>", "(the bytes' ratio)", big)
     print()
 PY
 cat "$tables"

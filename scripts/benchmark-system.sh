@@ -76,7 +76,7 @@ for label, name in [("default: uniform per-second damping and gravity", "Sparks"
                     ("damping::None", "Undamped"), ("damping::PerFrame", "PerFrame"),
                     ("+ features::Lifetime", "WithLifetime"), ("+ features::ForceAccumulator", "WithForces"),
                     ("+ features::PerParticleAcceleration", "WithAcceleration"),
-                    ("+ features::PerParticleDamping (powf per particle)", "WithDamping")]:
+                    ("+ features::PerParticleDamping (d^t per particle, vectorised)", "WithDamping")]:
     v = rate[f"BM_System<{name}<float>>/100000"]
     print(f"| {label} | {v:,.0f} | {v / base:.2f} |")
 PY

@@ -48,6 +48,14 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
+// The per-second policies' factors are inlined into a batch's loop at any optimisation level:
+// g++ -O2 would otherwise call them per particle, and a call stops vectorisation.
+#if defined(__GNUC__)
+#define POINTMASS_DETAIL_FACTORS_INLINE [[gnu::always_inline]]
+#else
+#define POINTMASS_DETAIL_FACTORS_INLINE
+#endif
+
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 /// How many terms of the phi series reach a precision of `digits` bits for |x| < 1/4: the
@@ -84,14 +92,18 @@ POINTMASS_HD constexpr PhiCoefficients<R> make_phi_coefficients() noexcept {
   return coefficients;
 }
 
-/// phi_Offset(x) = sum_{n>=0} x^n / (n + Offset)!, by Horner's rule, for |x| < 1/4. The
-/// coefficients are a local constant (computed at compile time), so device code can read them.
-template <int Offset, class R>
+/// phi_Offset(x) = sum_{n>=0} x^n / (n + Offset)!, by Horner's rule, for |x| < 1/4, from
+/// term N on. The coefficients are compile-time constants, so device code can read them; the
+/// rule is straight-line code (a loop over the coefficients stays a loop at g++ -O2, which
+/// then does not vectorise a batch's loop around it).
+template <int Offset, class R, int N = 0>
 POINTMASS_HD constexpr R phi_series(R x) noexcept {
-  constexpr PhiCoefficients<R> c = make_phi_coefficients<Offset, R>();
-  R sum = c.value[phi_terms<R> - 1];
-  for (int n = phi_terms<R> - 2; n >= 0; --n) sum = sum * x + c.value[n];
-  return sum;
+  constexpr R coefficient = make_phi_coefficients<Offset, R>().value[N];
+  if constexpr (N == phi_terms<R> - 1) {
+    return coefficient;
+  } else {
+    return phi_series<Offset, R, N + 1>(x) * x + coefficient;
+  }
 }
 
 }  // namespace pointmass::detail
@@ -117,6 +129,9 @@ class LogDamping {
  public:
   constexpr LogDamping() noexcept = default;
   POINTMASS_HD explicit LogDamping(R d) noexcept : value_(d), log_(detail::split_log(d)) {}
+  /// d and split_log(d), computed before (a ParticleSystem stores them in separate columns).
+  POINTMASS_HD constexpr LogDamping(R d, const detail::SplitLog<R>& log) noexcept
+      : value_(d), log_(log) {}
   POINTMASS_HD constexpr R value() const noexcept { return value_; }
   /// ln d as hi + lo (detail::split_log): both 0 for d = 1, a huge negative hi for d = 0.
   POINTMASS_HD constexpr const detail::SplitLog<R>& split_log() const noexcept { return log_; }
@@ -201,11 +216,23 @@ struct PerSecond {
   using Factors = Retention<R>;
 
   template <Real R, class T>
-  POINTMASS_HD static constexpr Factors<R> factors(const State<R>& state, const T& t) noexcept {
+  POINTMASS_DETAIL_FACTORS_INLINE POINTMASS_HD static constexpr Factors<R> factors(
+      const State<R>& state, const T& t) noexcept {
     if constexpr (wider_than_double_v<R>) {
       return {real_pow(state.value(), in_seconds(t))};
     } else {
       return {detail::pow_unit(state.split_log(), in_seconds(t))};
+    }
+  }
+  /// The same factors, bit for bit, for one particle at a time (Particle::integrate): the
+  /// exponential with a branch on its range (detail::pow_unit_scalar) instead of selects.
+  template <Real R, class T>
+  POINTMASS_HD static constexpr Factors<R> scalar_factors(const State<R>& state,
+                                                          const T& t) noexcept {
+    if constexpr (wider_than_double_v<R>) {
+      return factors(state, t);
+    } else {
+      return {detail::pow_unit_scalar(state.split_log(), in_seconds(t))};
     }
   }
   template <class V, class A, class T, class R>
@@ -271,7 +298,8 @@ struct Exact {
   /// loses at most a factor 1 / |x| < 4 to rounding. Branch-free (selects), so a loop over
   /// particles with their own damping vectorises.
   template <Real R, class T>
-  POINTMASS_HD static constexpr Factors<R> factors(const State<R>& state, const T& t) noexcept {
+  POINTMASS_DETAIL_FACTORS_INLINE POINTMASS_HD static constexpr Factors<R> factors(
+      const State<R>& state, const T& t) noexcept {
     // x = k t <= 0: zero when d = 1 or t = 0, and nothing is taken away: phi1 = 1,
     // phi2 = 1/2. Every branch is computed and the right one selected, on inputs that raise
     // no floating-point exception (no 0 / 0, no series of a huge x).
@@ -331,9 +359,24 @@ constexpr int stated_order() {
 }
 }  // namespace detail
 
+namespace detail {
+/// D::scalar_factors(state, t) where the policy has one (the same bits as D::factors,
+/// written for one particle at a time: a Particle's step), else D::factors(state, t).
+template <class D, class State, class T>
+POINTMASS_HD constexpr auto scalar_factors(const State& state, const T& t) noexcept {
+  if constexpr (requires { D::scalar_factors(state, t); }) {
+    return D::scalar_factors(state, t);
+  } else {
+    return D::factors(state, t);
+  }
+}
+}  // namespace detail
+
 /// The factors type a damping policy computes for one step in precision R.
 template <class D, class R>
 using damping_factors_t =
     decltype(D::factors(std::declval<typename D::template State<R>>(), std::declval<R>()));
 
 }  // namespace pointmass
+
+#undef POINTMASS_DETAIL_FACTORS_INLINE

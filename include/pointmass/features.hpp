@@ -52,6 +52,8 @@ enum class Column : unsigned char {
   force_y,
   force_z,
   damping,
+  damping_log_hi,
+  damping_log_lo,
   age,
   lifetime,
 };
@@ -93,7 +95,9 @@ T element_of(T* Class::*);
   X(force_x,            R,              has_forces)             \
   X(force_y,            R,              has_forces)             \
   X(force_z,            R,              has_forces)             \
-  X(damping,            damping_state,  per_particle_damping)   \
+  X(damping,            damping_column_t, per_particle_damping) \
+  X(damping_log_hi,     R,              per_particle_log_damping) \
+  X(damping_log_lo,     R,              per_particle_log_damping) \
   X(age,                R,              has_lifetime)           \
   X(lifetime,           R,              has_lifetime)
 
@@ -107,6 +111,17 @@ struct SystemLayout {
 
   static constexpr bool per_particle_damping =
       contains_v<features::PerParticleDamping, Features...>;
+  /// Per-particle damping states of the library's kinds are stored as columns of R: d in
+  /// `damping`, and for LogDamping (PerSecond, Exact) ln d's two parts in `damping_log_hi`
+  /// and `damping_log_lo`. A step then reads plain arrays (an array of three-member structs
+  /// is a strided load, which g++ -O2 does not vectorise); a policy of the user's with another
+  /// state keeps that state whole in `damping`. load_damping / store_damping convert.
+  static constexpr bool log_damping_state =
+      std::is_same_v<damping_state, damping::LogDamping<R>>;
+  static constexpr bool value_damping_state =
+      log_damping_state || std::is_same_v<damping_state, damping::StoredDamping<R>>;
+  static constexpr bool per_particle_log_damping = per_particle_damping && log_damping_state;
+  using damping_column_t = std::conditional_t<value_damping_state, R, damping_state>;
   static constexpr bool per_particle_acceleration =
       contains_v<features::PerParticleAcceleration, Features...>;
   static constexpr bool has_forces = contains_v<features::ForceAccumulator, Features...>;
@@ -118,6 +133,38 @@ struct SystemLayout {
     POINTMASS_DETAIL_COLUMNS(POINTMASS_DETAIL_MEMBER)
     std::size_t size = 0;
   };
+
+  /// Particle i's damping state, from the damping columns (per_particle_damping only).
+  POINTMASS_HD static constexpr damping_state load_damping(const Arrays& arrays,
+                                                           std::size_t i) noexcept {
+    if constexpr (log_damping_state) {
+      return damping_state(arrays.damping[i], detail::SplitLog<R>{arrays.damping_log_hi[i],
+                                                                  arrays.damping_log_lo[i]});
+    } else if constexpr (value_damping_state) {
+      return damping_state(arrays.damping[i]);
+    } else {
+      return arrays.damping[i];
+    }
+  }
+  /// Stores particle i's damping state into the damping columns (per_particle_damping only).
+  static constexpr void store_damping(const Arrays& arrays, std::size_t i,
+                                      const damping_state& state) noexcept {
+    if constexpr (value_damping_state) {
+      arrays.damping[i] = state.value();
+    } else {
+      arrays.damping[i] = state;
+    }
+    if constexpr (log_damping_state) {
+      arrays.damping_log_hi[i] = state.split_log().hi;
+      arrays.damping_log_lo[i] = state.split_log().lo;
+    }
+  }
+  /// True for the columns that hold parts of a damping state that must agree with each
+  /// other (d and ln d): ParticleSystem::column gives them read-only.
+  template <Column C>
+  static constexpr bool read_only = log_damping_state && (C == Column::damping ||
+                                                          C == Column::damping_log_hi ||
+                                                          C == Column::damping_log_lo);
 
   /// Every column's entry, in block order.
   static constexpr auto columns = std::tuple{POINTMASS_DETAIL_COLUMNS(POINTMASS_DETAIL_ENTRY)};

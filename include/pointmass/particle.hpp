@@ -172,13 +172,16 @@ class BasicParticle {
       return;
     }
 
+    // The factors first: a power function's call then comes before the particle's values are
+    // loaded, so none has to be kept across it.
+    const damping_factors factors = step_factors(duration);
     const Vector3<acceleration_type> resulting_acceleration =
         typed<acceleration_type>(acceleration_) +
         typed<force_type>(force_accumulator_) * Q::template make<inverse_mass_type>(inverse_mass_);
     auto p = typed<length_type>(position_);
     auto v = typed<velocity_type>(velocity_);
     if constexpr (PositionPolicyFor<P, D>) {  // else the static_assert above has said why
-      advance<D, P>(p, v, resulting_acceleration, duration, step_factors(duration));
+      advance<D, P>(p, v, resulting_acceleration, duration, factors);
     }
     position_ = raw(p);
     velocity_ = raw(v);
@@ -197,10 +200,12 @@ class BasicParticle {
   POINTMASS_HD constexpr damping_factors step_factors(const time_type& duration) noexcept {
     if constexpr (caches_factors) {
       const real t = Q::raw(duration);
-      if (!real_equal(t, cache_.duration)) cache_ = {t, D::factors(damping_, duration)};
-      return cache_.factors;
+      if (real_equal(t, cache_.duration)) return cache_.factors;
+      const damping_factors factors = detail::scalar_factors<D>(damping_, duration);
+      cache_ = {t, factors};
+      return factors;
     } else {
-      return D::factors(damping_, duration);
+      return detail::scalar_factors<D>(damping_, duration);
     }
   }
 

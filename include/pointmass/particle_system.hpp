@@ -24,8 +24,9 @@
 //   tag (namespace features)    stores per particle              without it
 //   (always)                    position x, y, z; velocity x, y, z
 //   PerParticleDamping          the damping policy's State       one damping for the system:
-//                               (d, or d and ln d for Exact);    D::factors (d^t, ...) is
-//                               factors computed per particle    computed once per step
+//                               (d; for PerSecond and Exact also D::factors (d^t, ...) is
+//                               ln d as hi + lo, each a column); computed once per step
+//                               factors computed per particle
 //   PerParticleAcceleration     acceleration x, y, z             one acceleration (gravity)
 //                                                                for the system
 //   ForceAccumulator            inverse mass, force accumulator  every particle has mass 1
@@ -34,10 +35,10 @@
 //                               ages every particle and removes
 //                               those with age >= lifetime
 //
-// With uniform per-second damping a step calls the power function once, not once per
-// particle; with PerParticleDamping and PerSecond, AccelerateThenDamp or Exact it calls it
-// per particle, which also stops vectorisation of the loop: choose it only when particles
-// really differ in drag. Tags may come in any order; an unknown tag is a compile error.
+// With uniform per-second damping a step computes d^t once, not once per particle. With
+// PerParticleDamping, PerSecond and Exact compute it per particle with the library's
+// branch-free exponential, inside the vectorised loop; AccelerateThenDamp calls powf / pow
+// per particle (to reproduce the reference engine bit for bit), which stops vectorisation. Tags may come in any order; an unknown tag is a compile error.
 // `storage_bytes_per_particle` tells what a configuration costs in memory.
 //
 // Capacity is reserved up front (constructor or `reserve`); `spawn` beyond it grows the block
@@ -107,7 +108,8 @@ class ParticleSystem
   /// particles: what step_particle works on.
   using Arrays = typename Layout::Arrays;
   using typename Kernel::StepParameters;
-  /// The element type of column C (R, or damping_state for Column::damping).
+  /// The element type of column C: R, but for Column::damping with a damping policy of the
+  /// user's whose state is neither StoredDamping nor LogDamping (then that state).
   template <Column C>
   using element_t = typename Layout::template element_t<C>;
 
@@ -229,7 +231,7 @@ class ParticleSystem
       a.inverse_mass[i] = R(1);
       store(a.force_x, a.force_y, a.force_z, i, {});
     }
-    if constexpr (per_particle_damping) a.damping[i] = damping_state{};
+    if constexpr (per_particle_damping) Layout::store_damping(a, i, damping_state{});
     if constexpr (has_lifetime) {
       a.age[i] = R(0);
       a.lifetime[i] = real_infinity<R>;
@@ -250,7 +252,9 @@ class ParticleSystem
       a.inverse_mass[i] = particle.inverse_mass();
       store(a.force_x, a.force_y, a.force_z, i, particle.force_accumulator());
     }
-    if constexpr (per_particle_damping) a.damping[i] = damping_state(particle.damping());
+    if constexpr (per_particle_damping) {
+      Layout::store_damping(a, i, damping_state(particle.damping()));
+    }
     return i;
   }
 
@@ -298,7 +302,7 @@ class ParticleSystem
   R damping(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
     if (!valid_index("damping", i)) return R(1);
     if constexpr (per_particle_damping) {
-      return arrays().damping[i].value();
+      return Layout::load_damping(arrays(), i).value();
     } else {
       return damping_.value();
     }
@@ -330,7 +334,7 @@ class ParticleSystem
   {
     if (detail::check_index("set_damping", i, size()) &&
         detail::check_damping("set_damping", damping)) {
-      arrays().damping[i] = damping_state(damping);
+      Layout::store_damping(arrays(), i, damping_state(damping));
     }
   }
 
@@ -405,10 +409,13 @@ class ParticleSystem
 
   // --- spans for renderers and other engines (valid until the block grows or moves) ---------
 
-  /// Column C of the live particles, for any column this configuration stores.
+  /// Column C of the live particles, for any column this configuration stores. The damping
+  /// columns of PerSecond and Exact (d and ln d as hi + lo, which must agree) are read-only:
+  /// set_damping(i, d) writes them.
   template <Column C>
     requires stores<C>
-  std::span<element_t<C>> column() noexcept {
+  std::span<std::conditional_t<Layout::template read_only<C>, const element_t<C>, element_t<C>>>
+  column() noexcept {
     return {arrays().*(Layout::template entry<C>::member), size()};
   }
   template <Column C>

@@ -7,8 +7,11 @@
 #include <cstdint>
 #include <random>
 #include <set>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <pointmass/particle_system.hpp>
@@ -136,7 +139,8 @@ TEST_CASE_TEMPLATE("arrays share one block, 64-byte aligned, staggered within th
     CAPTURE(capacity);
     ParticleSystem<R> sparks(capacity);
     Everything everything(capacity);
-    for (const std::size_t arrays : {std::size_t{6}, std::size_t{16}}) {
+    static_assert(Everything::array_count == 18);  // the damping state in three columns
+    for (const std::size_t arrays : {std::size_t{6}, std::size_t{18}}) {
       CAPTURE(arrays);
       const auto& a = sparks.arrays();
       const auto& b = everything.arrays();
@@ -150,10 +154,10 @@ TEST_CASE_TEMPLATE("arrays share one block, 64-byte aligned, staggered within th
         for (const R* p :
              {b.position_x, b.position_y, b.position_z, b.velocity_x, b.velocity_y, b.velocity_z,
               b.acceleration_x, b.acceleration_y, b.acceleration_z, b.inverse_mass, b.force_x,
-              b.force_y, b.force_z, b.age, b.lifetime}) {
+              b.force_y, b.force_z, b.damping, b.damping_log_hi, b.damping_log_lo, b.age,
+              b.lifetime}) {
           starts.push_back(reinterpret_cast<std::uintptr_t>(p));
         }
-        starts.push_back(reinterpret_cast<std::uintptr_t>(b.damping));
       }
       std::set<std::uintptr_t> page_offsets;
       for (const auto start : starts) {
@@ -164,13 +168,8 @@ TEST_CASE_TEMPLATE("arrays share one block, 64-byte aligned, staggered within th
       // In one block, without overlap: each array ends before the next begins.
       std::vector<std::uintptr_t> sorted = starts;
       std::sort(sorted.begin(), sorted.end());
-      // (The damping array holds each particle's damping state: d and ln d as hi + lo.)
-      const auto damping_start = reinterpret_cast<std::uintptr_t>(b.damping);
       for (std::size_t k = 1; k < sorted.size(); ++k) {
-        const std::size_t bytes =
-            capacity * (arrays == 16 && sorted[k - 1] == damping_start
-                            ? sizeof(typename Everything::damping_state)
-                            : sizeof(R));
+        const std::size_t bytes = capacity * sizeof(R);
         CHECK(sorted[k] - sorted[k - 1] >= bytes);
         CHECK(sorted[k] - sorted[k - 1] <= bytes + 4096 + 448);
       }
@@ -285,6 +284,50 @@ TEST_CASE_TEMPLATE("spans view the live particles and write through", R, float, 
   system.template column<Column::inverse_mass>()[1] = R(0);  // immovable from now on
   system.step(R(0.5));
   CHECK(system.position(1).x == R(6));
+}
+
+TEST_CASE_TEMPLATE("per-particle damping states live in columns of R that move together", R,
+                   float, double) {
+  // PerSecond and Exact: d, ln d's hi and lo, each a column of R (a step reads plain arrays),
+  // read-only through column() (the three must agree); PerFrame's d stays writable.
+  using Damped = ParticleSystem<R, damping::PerSecond, position::Euler,
+                                features::PerParticleDamping>;
+  using FrameDamped = ParticleSystem<R, damping::PerFrame, position::Euler,
+                                     features::PerParticleDamping>;
+  static_assert(std::is_same_v<decltype(std::declval<Damped&>().template column<Column::damping>()),
+                               std::span<const R>>);
+  static_assert(
+      std::is_same_v<decltype(std::declval<Damped&>().template column<Column::damping_log_hi>()),
+                     std::span<const R>>);
+  static_assert(
+      std::is_same_v<decltype(std::declval<FrameDamped&>().template column<Column::damping>()),
+                     std::span<R>>);
+  static_assert(!FrameDamped::template stores<Column::damping_log_hi>);
+
+  Damped system(8);
+  const R values[] = {R(0.25), R(0.5), R(0.99), R(0)};
+  for (const R d : values) {
+    const std::size_t i = system.spawn({}, {R(1), R(0), R(0)});
+    system.set_damping(i, d);
+  }
+  system.kill(1);  // swap-remove: the last particle (d = 0) moves into slot 1
+  const R expected[] = {R(0.25), R(0), R(0.99)};
+  const auto d = system.template column<Column::damping>();
+  const auto hi = system.template column<Column::damping_log_hi>();
+  const auto lo = system.template column<Column::damping_log_lo>();
+  REQUIRE(d.size() == 3);
+  for (std::size_t i = 0; i < 3; ++i) {
+    CAPTURE(i);
+    const damping::LogDamping<R> state(expected[i]);
+    CHECK(system.damping(i) == expected[i]);
+    CHECK(same_bits(d[i], expected[i]));
+    CHECK(same_bits(hi[i], state.split_log().hi));
+    CHECK(same_bits(lo[i], state.split_log().lo));
+  }
+  // A step with those columns keeps what d^t says: d = 0 stops the particle at once.
+  system.step(R(0.5));
+  CHECK(system.velocity(1).x == R(0));
+  CHECK(system.velocity(0).x == R(0.5));  // 0.25^0.5, exact
 }
 
 TEST_CASE_TEMPLATE("bad input is reported with the argument's name and value", R, float, double) {

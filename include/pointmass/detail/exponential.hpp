@@ -74,6 +74,8 @@ struct ExpTraits<float> {
   static constexpr int series_terms = 6;            ///< 1/2! .. 1/7!
   static constexpr float expm1_exact_scale = 20.0f; ///< 2^n - 1 exact for n <= 20
   static constexpr float log_of_zero = -0x1p96f;    ///< ln 0: t ln 0 < x_min for t >= 2^-89
+  static constexpr float normal_x_min = -86.0f;     ///< e^x normal for x_hi >= this: n >= -124
+  static constexpr float normal_x_max = 87.0f;      ///< and <= this: n <= 126
 };
 
 template <>
@@ -91,6 +93,8 @@ struct ExpTraits<double> {
   static constexpr int series_terms = 12;  ///< 1/2! .. 1/13!
   static constexpr double expm1_exact_scale = 40.0;
   static constexpr double log_of_zero = -0x1p960;  ///< ln 0: t ln 0 < x_min for t >= 2^-950
+  static constexpr double normal_x_min = -700.0;  ///< e^x normal for x_hi >= this: n >= -1010
+  static constexpr double normal_x_max = 700.0;   ///< and <= this: n <= 1010
 };
 
 /// 1 / (k + 2)!, the coefficient of r^k in (e^r - 1 - r) / r^2, computed at compile time.
@@ -335,4 +339,39 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R pow_unit(const SplitLog<
   }
 }
 
+/// pow_unit for one value at a time, the same bits (a Particle, against a batch's pow_unit):
+/// where e^x is a normal number (x_hi in [normal_x_min, normal_x_max], every damping and
+/// step a game uses) it needs no clamp and one scale factor, since ((1 + s) 2^m1) 2^m2 and
+/// (1 + s) 2^n are then the same exact scaling; elsewhere, and for t = 0, it is pow_unit.
+/// The branch is what a batch's vectorised loop cannot have and a scalar loop predicts (it
+/// goes the same way particle after particle), so a Particle's step skips the selects.
+template <Real R>
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R pow_unit_scalar(const SplitLog<R>& ln_d,
+                                                                        R t) noexcept {
+  if constexpr (wider_than_double_v<R>) {
+    return pow_unit(ln_d, t);
+  } else {
+    using T = ExpTraits<R>;
+    // split_time(t) as branches (the same values).
+    const R high = split_high(t);
+    const bool high_is_zero = real_equal(high, R(0));
+    const R t_hi = high_is_zero ? t : high;
+    const R t_lo = high_is_zero ? R(0) : t - high;
+    const R x_hi = t_hi * ln_d.hi;
+    if (!(x_hi >= T::normal_x_min && x_hi <= T::normal_x_max) || real_equal(t, R(0))) {
+      return pow_unit(ln_d, t);
+    }
+    // exp_reduce and exp_from without the clamp, term for term.
+    const R x_lo = t_lo * ln_d.hi + t * ln_d.lo;
+    const R n = (x_hi * T::inv_ln2 + T::shifter) - T::shifter;
+    const R r_hi = x_hi - n * T::ln2_hi;
+    const R r_lo = x_lo - n * T::ln2_lo;
+    const R r = r_hi + r_lo;
+    const R s = r_hi + (r_lo + (r * r) * exp_series(r));
+    return (R(1) + s) * power_of_two(n);
+  }
+}
+
 }  // namespace pointmass::detail
+
+#undef POINTMASS_DETAIL_ALWAYS_INLINE

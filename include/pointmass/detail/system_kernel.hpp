@@ -27,6 +27,7 @@
 #include "../position.hpp"
 #include "../real.hpp"
 #include "../vector3.hpp"
+#include "exponential.hpp"
 #include "validate.hpp"
 
 #if defined(__clang__)
@@ -65,10 +66,15 @@ class SystemKernel {
     Vector3<R> acceleration{};
   };
 
-  /// False when a step calls a power function (or expm1) per particle: per-particle damping
-  /// with any policy but PerFrame. Only a vectorisable loop is marked for vectorisation.
+  /// False when a step calls a power function per particle: per-particle damping with
+  /// damping::AccelerateThenDamp (powf / pow, to reproduce the reference engine) or a policy
+  /// of the user's. PerFrame needs no function, PerSecond and Exact the library's branch-free
+  /// exponential (detail/exponential.hpp). Only a vectorisable loop is marked for
+  /// vectorisation.
   static constexpr bool vectorisable =
-      !Layout::per_particle_damping || std::is_same_v<D, damping::PerFrame>;
+      !Layout::per_particle_damping || std::is_same_v<D, damping::PerFrame> ||
+      ((std::is_same_v<D, damping::PerSecond> || std::is_same_v<D, damping::Exact>) &&
+       !wider_than_double_v<R>);
 
   /// The loop's trip count is a multiple of this (the widest vector: 16 floats, 8 doubles).
   static constexpr std::size_t vector_block = 16;
@@ -125,10 +131,9 @@ class SystemKernel {
       arrays.force_x[i] = R(0);
       arrays.force_y[i] = R(0);
       arrays.force_z[i] = R(0);
-      const bool movable = inverse_mass > R(0);
-      advance_if(movable, arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
-      advance_if(movable, arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
-      advance_if(movable, arrays.position_z[i], arrays.velocity_z[i], az, t, factors);
+      advance_if_movable(inverse_mass, arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
+      advance_if_movable(inverse_mass, arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
+      advance_if_movable(inverse_mass, arrays.position_z[i], arrays.velocity_z[i], az, t, factors);
     } else {
       advance<D, P>(arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
       advance<D, P>(arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
@@ -205,7 +210,7 @@ class SystemKernel {
   POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr auto factors_of(
       const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
     if constexpr (Layout::per_particle_damping) {
-      return D::factors(arrays.damping[i], parameters.duration);
+      return D::factors(Layout::load_damping(arrays, i), parameters.duration);
     } else {
       static_cast<void>(arrays);
       static_cast<void>(i);
@@ -213,29 +218,18 @@ class SystemKernel {
     }
   }
 
-  // Both outcomes computed, one kept: a select the vectoriser can do, where a branch is not.
+  // Both outcomes computed, one kept (inverse_mass > 0: movable): a select the vectoriser can
+  // do, where a branch is not. The mask comes from sign bits (detail::select_if_less): g++ -O2
+  // has no SSE2 pattern for a 64-bit mask from a double comparison, so a `bool` made into a
+  // mask left double systems with forces scalar there.
   template <class F>
-  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void advance_if(
-      bool movable, R& p, R& v, R a, R t, const F& factors) noexcept {
+  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void advance_if_movable(
+      R inverse_mass, R& p, R& v, R a, R t, const F& factors) noexcept {
     R p1 = p;
     R v1 = v;
     advance<D, P>(p1, v1, a, t, factors);
-    p = select(movable, p1, p);
-    v = select(movable, v1, v);
-  }
-
-  // condition ? if_true : if_false, as bit operations (g++ -O2 does not if-convert `?:` here).
-  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr R select(bool condition, R if_true,
-                                                                 R if_false) noexcept {
-    if constexpr (sizeof(R) == 4 || sizeof(R) == 8) {
-      using Bits = std::conditional_t<sizeof(R) == 4, std::uint32_t, std::uint64_t>;
-      const Bits mask = Bits(0) - static_cast<Bits>(condition);
-      return __builtin_bit_cast(
-          R, static_cast<Bits>((__builtin_bit_cast(Bits, if_true) & mask) |
-                               (__builtin_bit_cast(Bits, if_false) & ~mask)));
-    } else {
-      return condition ? if_true : if_false;
-    }
+    p = select_if_less(R(0), inverse_mass, p1, p);
+    v = select_if_less(R(0), inverse_mass, v1, v);
   }
 };
 
