@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/config.hpp — the library's configuration and its one contract mechanism.
 //
 // POINTMASS_HD        marks every function a GPU kernel may call (`__host__ __device__`

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/damping.hpp — how velocity is damped and updated over one step.
 //
 // Damping d in [0, 1] is the fraction of velocity kept (1 keeps all of it). With resulting

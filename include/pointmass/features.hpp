@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/features.hpp — what a ParticleSystem may store, and the table of its arrays.
 //
 // Owns: the feature tags (namespace pointmass::features), the `Column` names of the arrays,

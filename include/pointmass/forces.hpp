@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/forces.hpp — force generators and the registry that applies them each step: the
 // umbrella of include/pointmass/forces/. What each generator computes, where the reference
 // engine's differ, the ranges, the stiff spring and the registry's ownership rules:

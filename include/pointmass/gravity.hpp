@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/gravity.hpp — gravity as an acceleration.
 //
 // Near the Earth f = m g (eq. 3.4), so p'' = g for any mass: gravity is set as the particle's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/parallel.hpp — a ParticleSystem's step on the standard execution policies.
 //
 //   #include <pointmass/parallel.hpp>

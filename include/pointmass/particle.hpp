@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/particle.hpp — the point mass and its integrator.
 //
 //   pointmass::Particle<float>                       the seed's engine: per-second damping,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/particle_system.hpp — many particles in structure-of-arrays form: the public API.
 //
 //   pointmass::ParticleSystem<float>                                   sparks: per-second damping

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/pointmass.hpp — the umbrella header: the whole library but the Boost.Units face,
 // standard library only. (Boost.Units support is apart, in <pointmass/units.hpp>.)
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/position.hpp — how the position moves over one step.
 //
 // A position policy gets the old position p0, the velocity at the start (v0) and end (v1) of

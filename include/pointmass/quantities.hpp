@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/quantities.hpp — the types a particle's values have.
 //
 // A QuantitySet names the type of each physical value: length, velocity, acceleration,

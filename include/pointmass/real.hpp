@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/real.hpp — the floating-point types the library computes in, and the maths
 // functions matched to each precision.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/units.hpp — the particle with Boost.Units SI quantities: a dimension error is a
 // compile error, at no run-time cost. The one public header that needs Boost (headers only).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/vector3.hpp — Vector3<T>, a 3-vector of any arithmetic-like T.
 //
 // T is usually a Real, but may be a dimensioned quantity (units.hpp): the arithmetic is

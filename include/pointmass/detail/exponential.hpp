@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/detail/exponential.hpp — the library's own exponential: e^x, e^x - 1 and d^t.
 //
 //   detail::exp(x), detail::expm1(x)     e^x and e^x - 1 in the precision of x

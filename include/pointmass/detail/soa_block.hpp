@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/detail/soa_block.hpp — the one allocation that holds a ParticleSystem's arrays.
 //
 // Owns: the block's memory (allocation, release, growth, copy), its placement of the arrays,

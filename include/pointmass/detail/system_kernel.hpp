@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/detail/system_kernel.hpp — the step of a ParticleSystem's arrays.
 //
 // Owns: what a step shares (StepParameters), the step of one particle (step_particle), the

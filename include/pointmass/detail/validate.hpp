@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/detail/validate.hpp — the library's argument checks, written once.
 //
 // Owns: what "a valid mass", "a valid damping", "a finite vector", "a valid index", "a force

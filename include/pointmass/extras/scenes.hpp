@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/extras/scenes.hpp — ready-made scenes (not in the umbrella header: include it
 // explicitly): the reference engine's ballistic shots and a
 // mass on a spring. The tests, examples and benchmarks all use these, so every accuracy and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/forces/apply.hpp — how a generator reaches one body or a batch.
 //
 // Owns: the FieldGenerator concept (a generator whose force depends on one body's own state:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/forces/bodies.hpp — what a force generator acts on.
 //
 // Owns: the body concepts (PlainBody: one particle over plain numbers; SteppableBody: a

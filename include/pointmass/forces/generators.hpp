@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/forces/generators.hpp — the force generators over a body's own state, the
 // springs between bodies, and apply_links for springs between the bodies of a batch.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/forces/oscillator.hpp — the damped harmonic oscillator in closed form, and the
 // stiff springs built on it.
 //

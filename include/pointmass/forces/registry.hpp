@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // pointmass/forces/registry.hpp — ForceRegistry: (particle, generator) pairs, applied each
 // step.
 //
