@@ -112,10 +112,12 @@ struct PrecisionTraits<R> {
   using real = R;
   using position = R;
 };
+// Read through Precision's members, so that naming a mismatched Precision anywhere stops at
+// its one sentence (the static_assert in its body).
 template <Real R, class Position>
 struct PrecisionTraits<Precision<R, Position>> {
-  using real = R;
-  using position = Position;
+  using real = typename Precision<R, Position>::real;
+  using position = typename Precision<R, Position>::position;
 };
 
 }  // namespace detail
