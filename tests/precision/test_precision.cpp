@@ -405,6 +405,25 @@ TEST_CASE("render-relative: a particle and the system agree, and a short buffer 
   CHECK(same_bits(short_buffer[0], Vector3<float>{7.0f, 7.0f, 7.0f}));
 }
 
+TEST_CASE("spawn(particle) copies a compensated position's error term: the system goes on bit for bit") {
+  pm::Particle<CompensatedPositions, pm::damping::PerSecond, pm::position::Kinematic> particle;
+  particle.set_position({3.0e6, -1.0e6, 5.0e5});
+  particle.set_velocity({123.0f, 45.0f, -67.0f});
+  particle.set_acceleration(pm::gravity<float>());
+  particle.set_damping(0.8f);
+  for (int k = 0; k < 1000; ++k) particle.integrate(1.0f / 60.0f);
+  REQUIRE(particle.stored_position_error().x != 0.0f);  // lo carries something by now
+  pm::ParticleSystem<CompensatedPositions, pm::damping::PerSecond, pm::position::Kinematic> system(1);
+  system.set_acceleration(pm::gravity<float>());
+  system.set_damping(0.8f);
+  system.spawn(particle);
+  for (int k = 0; k < 1000; ++k) {
+    particle.integrate(1.0f / 60.0f);
+    system.step(1.0f / 60.0f);
+  }
+  CHECK(system_matches(system, 0, particle));
+}
+
 // --- setting positions -------------------------------------------------------------------------
 
 TEST_CASE("set_position on compensated positions: split into hi + lo, beyond float's range refused") {
