@@ -198,10 +198,11 @@ struct PositionStorage<Compensated<R>> {
   POINTMASS_HD static constexpr R error_of(value x) noexcept {
     return static_cast<R>(x - static_cast<value>(static_cast<R>(x)));
   }
-  /// hi + lo - origin, rounded once to float at the end: hi - origin = s + e exactly
-  /// (TwoSum), s + lo = s2 + e2 exactly (TwoSum), and the offset is s2 + (e + e2). Where the
-  /// true offset is a float, s2 is within a factor of two of it, so e + e2 (the offset minus
-  /// s2) is a double, computed exactly, and so is the last sum.
+  /// hi + lo - origin: hi - origin = s + e exactly (TwoSum), s + lo = s2 + e2 exactly
+  /// (TwoSum), and the offset is s2 + (e + e2), rounded to float at the end. For a camera
+  /// near the particle (|origin| within a factor of two of |hi|) e is 0 and s2 is the offset
+  /// rounded once to double, so a float offset comes out exact; the error terms keep what the
+  /// double sums round away when the camera is far from the particle.
   POINTMASS_HD static constexpr float relative(R hi, R lo, value origin) noexcept {
     const value h = static_cast<value>(hi);
     const value s = h - origin;
