@@ -16,6 +16,7 @@
 #include <type_traits>
 
 #include "damping.hpp"
+#include "precision.hpp"
 #include "real.hpp"
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::features {
@@ -42,6 +43,9 @@ enum class Column : unsigned char {
   position_x,
   position_y,
   position_z,
+  position_error_x,  ///< Compensated positions only: the error carried beside position_x
+  position_error_y,
+  position_error_z,
   velocity_x,
   velocity_y,
   velocity_z,
@@ -83,9 +87,12 @@ T element_of(T* Class::*);
 // The table: one line per array, in block order (the order of `Column`).
 //   X(name,            element type,   stored when)
 #define POINTMASS_DETAIL_COLUMNS(X)                             \
-  X(position_x,         R,              true)                   \
-  X(position_y,         R,              true)                   \
-  X(position_z,         R,              true)                   \
+  X(position_x,         position_element, true)                 \
+  X(position_y,         position_element, true)                 \
+  X(position_z,         position_element, true)                 \
+  X(position_error_x,   R,              compensated_positions)  \
+  X(position_error_y,   R,              compensated_positions)  \
+  X(position_error_z,   R,              compensated_positions)  \
   X(velocity_x,         R,              true)                   \
   X(velocity_y,         R,              true)                   \
   X(velocity_z,         R,              true)                   \
@@ -105,10 +112,18 @@ T element_of(T* Class::*);
 #define POINTMASS_DETAIL_MEMBER(name, type, stored) type* name = nullptr;
 #define POINTMASS_DETAIL_ENTRY(name, type, stored) ColumnEntry<&Arrays::name, (stored)>{},
 
-/// What a configuration stores. Features may come in any order.
-template <Real R, DampingPolicy D, class... Features>
+/// What a configuration stores. Features may come in any order. S is a Real or a
+/// Precision<R, Position> (precision.hpp): R for every column but the positions.
+template <PrecisionChoice S, DampingPolicy D, class... Features>
 struct SystemLayout {
+  using R = real_of_t<S>;
   using damping_state = typename D::template State<R>;
+  /// How positions are stored (precision.hpp), and the element of the position columns
+  /// (R, or a wider Real).
+  using position_storage = PositionStorage<position_precision_of_t<S>>;
+  using position_element = typename position_storage::element;
+  /// Compensated<R> positions: an error column beside each position column.
+  static constexpr bool compensated_positions = position_storage::compensated;
 
   static constexpr bool per_particle_damping =
       contains_v<features::PerParticleDamping, Features...>;

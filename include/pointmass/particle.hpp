@@ -6,6 +6,8 @@
 //   pointmass::Particle<double, damping::PerFrame, position::Kinematic>
 //   pointmass::BasicParticle<Quantities, D, P>       the same over any QuantitySet (units.hpp
 //                                                    uses it for SI quantities)
+//   pointmass::Particle<Precision<float, double>>    float arithmetic, double positions: far
+//                                                    from the origin (precision.hpp)
 //
 // One step of duration t (`integrate`), as the policies compose:
 //   a  = acceleration + force_accumulator * inverse_mass     resulting acceleration
@@ -18,6 +20,11 @@
 // infinite-mass particle (inverse mass 0) does not move: a step of t > 0 only clears its
 // accumulator. ParticleSystem follows the same rule, so the two agree bit for bit. The
 // acceleration is the user's (mainly gravity) and is never changed by a step.
+//
+// With a position precision other than the arithmetic's (Precision<float, double>,
+// Precision<float, Compensated<float>>), p1 is p0 + d with the displacement
+// d = P::position(0, v0, v1, a, t, f) computed in the arithmetic's precision and added in the
+// position's (precision.hpp); the velocity is the same, bit for bit, as with plain floats.
 #pragma once
 
 #include <type_traits>
@@ -26,6 +33,7 @@
 #include "detail/validate.hpp"
 #include "damping.hpp"
 #include "position.hpp"
+#include "precision.hpp"
 #include "quantities.hpp"
 #include "real.hpp"
 #include "vector3.hpp"
@@ -44,11 +52,34 @@ POINTMASS_HD constexpr void advance(Position& p, Velocity& v, const Acceleration
   v = v1;
 }
 
+namespace detail {
+
+/// One component's step with a position stored as Storage says (precision.hpp's
+/// PositionStorage): the displacement in the arithmetic's precision (the position policy from
+/// p0 = 0), added to the stored position in the position's. p is the element; lo the error
+/// term (Compensated only; untouched otherwise). Particle::integrate computes the same.
+template <class D, class P, class Storage, class R, class Factors>
+POINTMASS_HD constexpr void advance_stored(typename Storage::element& p, R& lo, R& v,
+                                           const R& a, const R& t,
+                                           const Factors& factors) noexcept {
+  R displacement = R(0);
+  advance<D, P>(displacement, v, a, t, factors);
+  if constexpr (Storage::compensated) {
+    Storage::add(p, lo, displacement);
+  } else {
+    static_cast<void>(lo);
+    Storage::add(p, displacement);
+  }
+}
+
+}  // namespace detail
+
 /// P is checked in the body (detail::check_policy_pair), so that an invalid pair of policies
 /// is one sentence naming the pairs that work.
 template <QuantitySet Q, DampingPolicy D = damping::PerSecond, class P = position::Euler>
 class BasicParticle {
   static_assert(detail::check_policy_pair<D, P>());
+  using Storage = detail::PositionStorage<typename detail::QuantityPositions<Q>::precision>;
 
  public:
   using quantities = Q;
@@ -62,6 +93,16 @@ class BasicParticle {
   using mass_type = typename Q::mass;
   using inverse_mass_type = typename Q::inverse_mass;
   using force_type = typename Q::force;
+  /// How the position is stored: `real` (today's particles), a wider Real, or
+  /// Compensated<real> (precision.hpp).
+  using position_precision = typename detail::QuantityPositions<Q>::precision;
+  /// What position() returns and set_position takes, per component: length_type when the
+  /// position is stored as `real`, else a length of position_value_t (double for
+  /// Precision<float, double> and Precision<float, Compensated<float>>).
+  using position_type = typename detail::QuantityPositions<Q>::type;
+  /// The number type of the stored position (real, or a wider Real; real for Compensated).
+  using position_element =
+      typename detail::PositionStorage<typename detail::QuantityPositions<Q>::precision>::element;
   using damping_state = typename D::template State<real>;
   using damping_factors = damping_factors_t<D, real>;
 
@@ -73,14 +114,51 @@ class BasicParticle {
   /// factors are what D::factors returns, so results do not change, bit for bit.
   static constexpr bool caches_factors =
       !std::is_empty_v<damping_factors> && !std::is_same_v<D, damping::PerFrame>;
+  /// True when the position is stored in the arithmetic's own precision (as today).
+  static constexpr bool plain_position = std::is_same_v<position_precision, real>;
+  static_assert(plain_position || PositionPrecision<position_precision, real>,
+                "BasicParticle: the quantity set's position_precision must be a Real at least "
+                "as wide as its real, or Compensated<real>");
 
   /// At rest at the origin, no acceleration, mass 1, damping 1 (none).
   constexpr BasicParticle() noexcept = default;
 
   // --- state -------------------------------------------------------------------------------
 
-  POINTMASS_HD constexpr Vector3<length_type> position() const noexcept {
-    return typed<length_type>(position_);
+  POINTMASS_HD constexpr Vector3<position_type> position() const noexcept {
+    if constexpr (Storage::compensated) {
+      return typed<position_type>(Vector3<position_value>{
+          Storage::value_of(position_.x, position_error_.x),
+          Storage::value_of(position_.y, position_error_.y),
+          Storage::value_of(position_.z, position_error_.z)});
+    } else {
+      return typed<position_type>(position_);
+    }
+  }
+  /// The position relative to `origin` (a camera), as float numbers (metres): computed from
+  /// the whole stored position, and exact wherever the true offset is a float.
+  POINTMASS_HD constexpr Vector3<float> position_relative_to(
+      const Vector3<position_type>& origin) const noexcept {
+    const Vector3<position_value> o = raw(origin);
+    if constexpr (Storage::compensated) {
+      return {Storage::relative(position_.x, position_error_.x, o.x),
+              Storage::relative(position_.y, position_error_.y, o.y),
+              Storage::relative(position_.z, position_error_.z, o.z)};
+    } else {
+      return {Storage::relative(position_.x, o.x), Storage::relative(position_.y, o.y),
+              Storage::relative(position_.z, o.z)};
+    }
+  }
+  /// The stored position's numbers: the position itself when it is stored as `real` or a
+  /// wider Real, the rounded part of hi + lo for Compensated<real> (precision.hpp).
+  POINTMASS_HD constexpr Vector3<position_element> stored_position() const noexcept {
+    return position_;
+  }
+  /// Compensated<real> only: the error part lo of hi + lo.
+  POINTMASS_HD constexpr Vector3<real> stored_position_error() const noexcept
+    requires Storage::compensated
+  {
+    return position_error_;
   }
   POINTMASS_HD constexpr Vector3<velocity_type> velocity() const noexcept {
     return typed<velocity_type>(velocity_);
@@ -107,8 +185,19 @@ class BasicParticle {
 
   // --- setters: always validated; a rejected value leaves the particle unchanged ------------
 
-  constexpr void set_position(const Vector3<length_type>& position) {
-    if (const auto p = raw(position); detail::check_finite("set_position", "position", p)) position_ = p;
+  /// A finite position (for Compensated<real>, also within real's range).
+  constexpr void set_position(const Vector3<position_type>& position) {
+    const auto p = raw(position);
+    if constexpr (Storage::compensated) {
+      if (!detail::check_finite("set_position", "position", p)) return;
+      const Vector3<real> hi{Storage::element_of(p.x), Storage::element_of(p.y),
+                             Storage::element_of(p.z)};
+      if (!detail::check_representable("set_position", "position", p, hi)) return;
+      position_ = hi;
+      position_error_ = {Storage::error_of(p.x), Storage::error_of(p.y), Storage::error_of(p.z)};
+    } else {
+      if (detail::check_finite("set_position", "position", p)) position_ = p;
+    }
   }
   constexpr void set_velocity(const Vector3<velocity_type>& velocity) {
     if (const auto v = raw(velocity); detail::check_finite("set_velocity", "velocity", v)) velocity_ = v;
@@ -179,17 +268,37 @@ class BasicParticle {
     const Vector3<acceleration_type> resulting_acceleration =
         typed<acceleration_type>(acceleration_) +
         typed<force_type>(force_accumulator_) * Q::template make<inverse_mass_type>(inverse_mass_);
-    auto p = typed<length_type>(position_);
     auto v = typed<velocity_type>(velocity_);
-    if constexpr (PositionPolicyFor<P, D>) {  // else the static_assert above has said why
+    if constexpr (!PositionPolicyFor<P, D>) {
+      // the static_assert above has said why
+    } else if constexpr (plain_position) {
+      auto p = typed<length_type>(position_);
       advance<D, P>(p, v, resulting_acceleration, duration, factors);
+      position_ = raw(p);
+    } else {
+      // The displacement from p0 = 0, typed (so SI quantities check its dimensions), then
+      // added to the stored position in its own precision (precision.hpp).
+      auto displacement = typed<length_type>(Vector3<real>{});
+      advance<D, P>(displacement, v, resulting_acceleration, duration, factors);
+      const Vector3<real> d = raw(displacement);
+      if constexpr (Storage::compensated) {
+        Storage::add(position_.x, position_error_.x, d.x);
+        Storage::add(position_.y, position_error_.y, d.y);
+        Storage::add(position_.z, position_error_.z, d.z);
+      } else {
+        Storage::add(position_.x, d.x);
+        Storage::add(position_.y, d.y);
+        Storage::add(position_.z, d.z);
+      }
     }
-    position_ = raw(p);
     velocity_ = raw(v);
     force_accumulator_ = {};
   }
 
  private:
+  using position_value = typename Storage::value;
+  struct NoPositionError {};
+
   /// The last step's length (-1 before the first: never a valid one) and its factors.
   struct FactorCache {
     real duration = real(-1);
@@ -210,16 +319,19 @@ class BasicParticle {
     }
   }
 
-  template <class T>
-  POINTMASS_HD static constexpr Vector3<T> typed(const Vector3<real>& v) noexcept {
+  template <class T, class N>
+  POINTMASS_HD static constexpr Vector3<T> typed(const Vector3<N>& v) noexcept {
     return {Q::template make<T>(v.x), Q::template make<T>(v.y), Q::template make<T>(v.z)};
   }
   template <class T>
-  POINTMASS_HD static constexpr Vector3<real> raw(const Vector3<T>& v) noexcept {
-    return {Q::raw(v.x), Q::raw(v.y), Q::raw(v.z)};
+  POINTMASS_HD static constexpr auto raw(const Vector3<T>& v) noexcept {
+    using N = std::remove_cvref_t<decltype(Q::raw(v.x))>;
+    return Vector3<N>{Q::raw(v.x), Q::raw(v.y), Q::raw(v.z)};
   }
 
-  Vector3<real> position_{};
+  Vector3<typename Storage::element> position_{};
+  [[no_unique_address]] std::conditional_t<Storage::compensated, Vector3<real>, NoPositionError>
+      position_error_{};
   Vector3<real> velocity_{};
   Vector3<real> acceleration_{};
   Vector3<real> force_accumulator_{};
@@ -228,8 +340,12 @@ class BasicParticle {
   [[no_unique_address]] std::conditional_t<caches_factors, FactorCache, NoFactorCache> cache_{};
 };
 
-/// The particle over plain numbers (SI units by convention: metres, seconds, kilograms).
-template <Real R, DampingPolicy D = damping::PerSecond, class P = position::Euler>
+/// The particle over plain numbers (SI units by convention: metres, seconds, kilograms). R is
+/// a Real, or a Precision<Real, Position> (precision.hpp) for positions stored wider than
+/// the arithmetic (Precision<R> computes and stores as R does). R is used as it is, so that
+/// generic code can deduce it from a Particle<R>.
+template <class R, DampingPolicy D = damping::PerSecond, class P = position::Euler>
+  requires Real<R> || PrecisionChoice<R>
 using Particle = BasicParticle<PlainQuantities<R>, D, P>;
 
 }  // namespace pointmass

@@ -7,6 +7,13 @@
 //                             features::Lifetime>                       fireworks that burn out
 //   pointmass::ParticleSystem<double, damping::PerSecond, position::SemiImplicit,
 //                             features::PerParticleDamping, features::ForceAccumulator>
+//   pointmass::ParticleSystem<Precision<float, Compensated<float>>>     far from the origin
+//                                                                      (precision.hpp)
+//
+// The first argument is a Real, or a Precision<Real, Position> (precision.hpp): positions
+// stored as double (position columns of double) or Compensated<Real> (three more columns,
+// position_error_x/y/z, hold the carried error); everything else stays in Real.
+// `positions_relative_to(origin, buffer)` writes float positions relative to a camera.
 //
 // ParticleSystem<Real, DampingPolicy, PositionPolicy, Features...> steps many particles with
 // the same policies as `Particle` and the same results: each particle's step is
@@ -86,13 +93,15 @@
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
-template <Real R, DampingPolicy D = damping::PerSecond, class P = position::Euler,
+template <class S, DampingPolicy D = damping::PerSecond, class P = position::Euler,
           class... Features>
-  requires(detail::is_feature_v<Features> && ...)
+  requires(Real<S> || PrecisionChoice<S>) && (detail::is_feature_v<Features> && ...)
 class ParticleSystem
-    : public detail::SystemKernel<R, D, P, detail::SystemLayout<R, D, Features...>> {
-  using Layout = detail::SystemLayout<R, D, Features...>;
+    : public detail::SystemKernel<real_of_t<S>, D, P, detail::SystemLayout<S, D, Features...>> {
+  using R = real_of_t<S>;
+  using Layout = detail::SystemLayout<S, D, Features...>;
   using Kernel = detail::SystemKernel<R, D, P, Layout>;
+  using Storage = typename Layout::position_storage;
   using Block = detail::SoaBlock<Layout>;
   // P is checked here, with one sentence, rather than as a constraint (see position.hpp).
   static_assert(detail::check_policy_pair<D, P>());
@@ -104,7 +113,14 @@ class ParticleSystem
   using damping_state = typename D::template State<R>;
   using damping_factors = damping_factors_t<D, R>;
   /// The scalar particle whose step this system reproduces.
-  using particle_type = Particle<R, D, P>;
+  using particle_type = Particle<S, D, P>;
+  /// How positions are stored (precision.hpp): R, a wider Real, or Compensated<R>.
+  using position_precision = position_precision_of_t<S>;
+  /// What position(i) returns and spawn and set_position take, per component (R, or double
+  /// for Precision<float, double> and Precision<float, Compensated<float>>).
+  using position_value = typename Storage::value;
+  /// The element of the position columns (position_x(), ...).
+  using position_element = typename Layout::position_element;
   /// Raw pointers to the arrays (nullptr for those not stored) and the number of live
   /// particles: what step_particle works on.
   using Arrays = typename Layout::Arrays;
@@ -216,14 +232,14 @@ class ParticleSystem
   /// values start as a default Particle's: acceleration 0, damping 1, mass 1, no force, age 0,
   /// lifetime infinite. Non-finite input is reported and nothing is added (returns npos).
   /// Grows the block when full (invalidating spans and arrays()).
-  std::size_t spawn(const Vector3<R>& position, const Vector3<R>& velocity) {
-    if (!detail::check_finite("spawn", "position", position)) return npos;
+  std::size_t spawn(const Vector3<position_value>& position, const Vector3<R>& velocity) {
+    if (!valid_position("spawn", position)) return npos;
     if (!detail::check_finite("spawn", "velocity", velocity)) return npos;
     if (size() == capacity()) grow();
     const std::size_t i = size();
     set_size(i + 1);
     const Arrays& a = arrays();
-    store(a.position_x, a.position_y, a.position_z, i, position);
+    store_position(i, position);
     store(a.velocity_x, a.velocity_y, a.velocity_z, i, velocity);
     if constexpr (per_particle_acceleration) {
       store(a.acceleration_x, a.acceleration_y, a.acceleration_z, i, {});
@@ -246,6 +262,13 @@ class ParticleSystem
     const std::size_t i = spawn(particle.position(), particle.velocity());
     if (i == npos) return npos;
     const Arrays& a = arrays();
+    if constexpr (!std::is_same_v<position_precision, R>) {  // the stored numbers, exactly
+      store(a.position_x, a.position_y, a.position_z, i, particle.stored_position());
+      if constexpr (Layout::compensated_positions) {
+        store(a.position_error_x, a.position_error_y, a.position_error_z, i,
+              particle.stored_position_error());
+      }
+    }
     if constexpr (per_particle_acceleration) {
       store(a.acceleration_x, a.acceleration_y, a.acceleration_z, i, particle.acceleration());
     }
@@ -282,9 +305,33 @@ class ParticleSystem
 
   // --- per-particle values (index < size(): checked when POINTMASS_CHECKS is on) -------------
 
-  Vector3<R> position(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
+  Vector3<position_value> position(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
     if (!valid_index("position", i)) return {};
-    return load(arrays().position_x, arrays().position_y, arrays().position_z, i);
+    const Arrays& a = arrays();
+    if constexpr (Layout::compensated_positions) {
+      return {Storage::value_of(a.position_x[i], a.position_error_x[i]),
+              Storage::value_of(a.position_y[i], a.position_error_y[i]),
+              Storage::value_of(a.position_z[i], a.position_error_z[i])};
+    } else {
+      return load(a.position_x, a.position_y, a.position_z, i);
+    }
+  }
+  /// Particle i's position relative to `origin` (a camera), as float: from the whole
+  /// stored position, exact wherever the true offset is a float (precision.hpp).
+  Vector3<float> position_relative_to(std::size_t i, const Vector3<position_value>& origin) const
+      noexcept(!POINTMASS_HOST_CHECKS) {
+    if (!valid_index("position_relative_to", i)) return {};
+    return relative(arrays(), i, origin);
+  }
+  /// Every particle's position relative to `origin`, as float, into `buffer` (at least
+  /// size() elements; element i for particle i): what a renderer uploads. A buffer too small
+  /// is reported and nothing is written.
+  void positions_relative_to(const Vector3<position_value>& origin,
+                             std::span<Vector3<float>> buffer) const {
+    if (!detail::check_buffer("positions_relative_to", "buffer", buffer.size(), size())) return;
+    const Arrays a = arrays();
+    const std::size_t count = size();
+    for (std::size_t i = 0; i < count; ++i) buffer[i] = relative(a, i, origin);
   }
   Vector3<R> velocity(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
     if (!valid_index("velocity", i)) return {};
@@ -309,10 +356,9 @@ class ParticleSystem
     }
   }
 
-  void set_position(std::size_t i, const Vector3<R>& position) {
-    if (detail::check_index("set_position", i, size()) &&
-        detail::check_finite("set_position", "position", position)) {
-      store(arrays().position_x, arrays().position_y, arrays().position_z, i, position);
+  void set_position(std::size_t i, const Vector3<position_value>& position) {
+    if (detail::check_index("set_position", i, size()) && valid_position("set_position", position)) {
+      store_position(i, position);
     }
   }
   void set_velocity(std::size_t i, const Vector3<R>& velocity) {
@@ -425,15 +471,21 @@ class ParticleSystem
     return {arrays().*(Layout::template entry<C>::member), size()};
   }
 
-  std::span<R> position_x() noexcept { return column<Column::position_x>(); }
-  std::span<R> position_y() noexcept { return column<Column::position_y>(); }
-  std::span<R> position_z() noexcept { return column<Column::position_z>(); }
+  std::span<position_element> position_x() noexcept { return column<Column::position_x>(); }
+  std::span<position_element> position_y() noexcept { return column<Column::position_y>(); }
+  std::span<position_element> position_z() noexcept { return column<Column::position_z>(); }
   std::span<R> velocity_x() noexcept { return column<Column::velocity_x>(); }
   std::span<R> velocity_y() noexcept { return column<Column::velocity_y>(); }
   std::span<R> velocity_z() noexcept { return column<Column::velocity_z>(); }
-  std::span<const R> position_x() const noexcept { return column<Column::position_x>(); }
-  std::span<const R> position_y() const noexcept { return column<Column::position_y>(); }
-  std::span<const R> position_z() const noexcept { return column<Column::position_z>(); }
+  std::span<const position_element> position_x() const noexcept {
+    return column<Column::position_x>();
+  }
+  std::span<const position_element> position_y() const noexcept {
+    return column<Column::position_y>();
+  }
+  std::span<const position_element> position_z() const noexcept {
+    return column<Column::position_z>();
+  }
   std::span<const R> velocity_x() const noexcept { return column<Column::velocity_x>(); }
   std::span<const R> velocity_y() const noexcept { return column<Column::velocity_y>(); }
   std::span<const R> velocity_z() const noexcept { return column<Column::velocity_z>(); }
@@ -552,13 +604,53 @@ class ParticleSystem
     set_size(last);
   }
 
-  static void store(R* x, R* y, R* z, std::size_t i, const Vector3<R>& value) noexcept {
+  template <class T>
+  static void store(T* x, T* y, T* z, std::size_t i, const Vector3<T>& value) noexcept {
     x[i] = value.x;
     y[i] = value.y;
     z[i] = value.z;
   }
-  static Vector3<R> load(const R* x, const R* y, const R* z, std::size_t i) noexcept {
+  template <class T>
+  static Vector3<T> load(const T* x, const T* y, const T* z, std::size_t i) noexcept {
     return {x[i], y[i], z[i]};
+  }
+
+  // A finite position (for Compensated<R>, also within R's range).
+  static bool valid_position(const char* function, const Vector3<position_value>& position) {
+    if (!detail::check_finite(function, "position", position)) return false;
+    if constexpr (Layout::compensated_positions) {
+      return detail::check_representable(
+          function, "position", position,
+          Vector3<R>{Storage::element_of(position.x), Storage::element_of(position.y),
+                     Storage::element_of(position.z)});
+    } else {
+      return true;
+    }
+  }
+  void store_position(std::size_t i, const Vector3<position_value>& position) noexcept {
+    const Arrays& a = arrays();
+    if constexpr (Layout::compensated_positions) {
+      store(a.position_x, a.position_y, a.position_z, i,
+            Vector3<R>{Storage::element_of(position.x), Storage::element_of(position.y),
+                       Storage::element_of(position.z)});
+      store(a.position_error_x, a.position_error_y, a.position_error_z, i,
+            Vector3<R>{Storage::error_of(position.x), Storage::error_of(position.y),
+                       Storage::error_of(position.z)});
+    } else {
+      store(a.position_x, a.position_y, a.position_z, i, position);
+    }
+  }
+  static Vector3<float> relative(const Arrays& a, std::size_t i,
+                                 const Vector3<position_value>& origin) noexcept {
+    if constexpr (Layout::compensated_positions) {
+      return {Storage::relative(a.position_x[i], a.position_error_x[i], origin.x),
+              Storage::relative(a.position_y[i], a.position_error_y[i], origin.y),
+              Storage::relative(a.position_z[i], a.position_error_z[i], origin.z)};
+    } else {
+      return {Storage::relative(a.position_x[i], origin.x),
+              Storage::relative(a.position_y[i], origin.y),
+              Storage::relative(a.position_z[i], origin.z)};
+    }
   }
 
   void set_size(std::size_t size) noexcept { block_.arrays().size = size; }

@@ -4,6 +4,8 @@
 //
 //   pointmass::units::Particle<double>                          SI quantities of double
 //   pointmass::units::Particle<float, damping::PerFrame, position::Kinematic>
+//   pointmass::units::Particle<Precision<float, double>>        float quantities, the position
+//                                                               a units::length<double>
 //
 // Every input and output is a quantity of the particle's Real:
 //
@@ -38,6 +40,11 @@
 // reverse); a scalar quantity of a wider Real narrowed to the particle's (a double mass or
 // duration for a float particle). Boost.Units converts a scalar float quantity to a double
 // one implicitly, since that loses nothing. See docs/units.md for what the errors look like.
+//
+// With a Precision<R, Position> (precision.hpp) every value is a quantity of R but the
+// position, read and set as a units::length of position_value_t (double for
+// Precision<float, double> and Precision<float, Compensated<float>>); the step's
+// displacement is still a length<R>, checked for dimensions as above.
 #pragma once
 
 #include <type_traits>
@@ -90,10 +97,14 @@ constexpr Vector3<acceleration<R>> gravity(
   return {acceleration<R>::from_value(R(0)), -g, acceleration<R>::from_value(R(0))};
 }
 
-/// The QuantitySet of Boost.Units SI quantities of R.
-template <Real R>
+/// The QuantitySet of Boost.Units SI quantities of R; S is a Real R or a
+/// `Precision<R, Position>`, whose position is a length of `position_value_t<S>`.
+template <PrecisionChoice S>
 struct SiQuantities {
+  using R = real_of_t<S>;
   using real = R;
+  using position_precision = position_precision_of_t<S>;
+  using position = units::length<position_value_t<S>>;
   using length = units::length<R>;
   using velocity = units::velocity<R>;
   using acceleration = units::acceleration<R>;
@@ -104,12 +115,12 @@ struct SiQuantities {
 
   /// The quantity of type Q (one of the above) whose number, in SI units, is `raw`.
   template <class Q>
-  POINTMASS_HD static constexpr Q make(R raw) noexcept {
+  POINTMASS_HD static constexpr Q make(typename Q::value_type raw) noexcept {
     return Q::from_value(raw);
   }
   /// The number a quantity holds, in SI units.
-  template <class Unit>
-  POINTMASS_HD static constexpr R raw(const bu::quantity<Unit, R>& quantity) noexcept {
+  template <class Unit, class Y>
+  POINTMASS_HD static constexpr Y raw(const bu::quantity<Unit, Y>& quantity) noexcept {
     return quantity.value();
   }
 };
@@ -160,10 +171,12 @@ inline constexpr bool always_false_v = false;
 
 /// A particle whose every input and output is an SI quantity of R (see the file comment).
 /// BasicParticle over SiQuantities<R>, plus one overload per setter that turns a wrong
-/// argument type into a one-line error message.
-template <Real R, DampingPolicy D = damping::PerSecond, class P = position::Euler>
-class Particle : public BasicParticle<SiQuantities<R>, D, P> {
-  using Base = BasicParticle<SiQuantities<R>, D, P>;
+/// argument type into a one-line error message. S is R or a Precision<R, Position>.
+template <class S, DampingPolicy D = damping::PerSecond, class P = position::Euler>
+  requires Real<S> || PrecisionChoice<S>
+class Particle : public BasicParticle<SiQuantities<canonical_precision_t<S>>, D, P> {
+  using Base = BasicParticle<SiQuantities<canonical_precision_t<S>>, D, P>;
+  using R = typename Base::real;
 
  public:
   using typename Base::acceleration_type;
@@ -171,6 +184,7 @@ class Particle : public BasicParticle<SiQuantities<R>, D, P> {
   using typename Base::inverse_mass_type;
   using typename Base::length_type;
   using typename Base::mass_type;
+  using typename Base::position_type;
   using typename Base::time_type;
   using typename Base::velocity_type;
 
@@ -211,9 +225,9 @@ class Particle : public BasicParticle<SiQuantities<R>, D, P> {
   // The overloads below are chosen only for an argument of the wrong type; each fails with
   // a static_assert naming what was expected.
   template <class T>
-    requires(!std::is_same_v<T, length_type>)
+    requires(!std::is_same_v<T, position_type>)
   void set_position(const Vector3<T>&) {
-    POINTMASS_UNITS_REJECT(set_position, length_type, T,
+    POINTMASS_UNITS_REJECT(set_position, position_type, T,
                            "a Vector3 of units::length<Real> (metres)");
   }
   template <class T>

@@ -50,6 +50,28 @@ std::string float_drift() {
   return format("%.0f m", magnitude(flight.single - flight.twin));
 }
 
+/// The same flight in the four precisions: the distance from the exact sum of the float
+/// steps and from the double particle.
+std::string far_flight_table() {
+  const FarFlight flight = fly_far_from_origin(1'000'000);
+  const auto metres = [](double x) {
+    return x >= 1.0 ? format("%.0f m", x) : x >= 1e-3 ? format("%.1f mm", x * 1e3)
+                                                      : format("%.2g m", x);
+  };
+  std::string table =
+      "| particle | from the exact sum of the float steps | from the double particle |\n"
+      "|---|---|---|\n";
+  const auto row = [&](const char* name, const Vector3<double>& p) {
+    table += std::string("| ") + name + " | " + metres(magnitude(p - flight.exact)) + " | " +
+             metres(magnitude(p - flight.twin)) + " |\n";
+  };
+  row("`Particle<float>`", flight.single);
+  row("`Particle<Precision<float, double>>`", flight.wide);
+  row("`Particle<Precision<float, Compensated<float>>>`", flight.pair);
+  row("`Particle<double>`", flight.twin);
+  return table;
+}
+
 std::string single_step_error() {
   double worst = 0;
   for (const Scene& s : ballistic_scenes()) {
@@ -133,7 +155,12 @@ enough step makes them stable.
   print("\n## Float far from the origin\n\nFree flight at (10, 0, 5) m/s from (1e6, 0, 0) m, 10^6 steps of 1/60 s (4.6 hours): float ends " +
         float_drift() +
         " from double (bound: half an ulp of 1.17e6 m per step, 62500 m; `tests/stress`). At "
-        "1e6 m a float resolves only 1/16 m: use double, or keep positions near the origin.\n");
+        "1e6 m a float resolves only 1/16 m. Keep float arithmetic and store only the position "
+        "wider (`Precision<float, double>` or `Precision<float, Compensated<float>>`, "
+        "[large-worlds.md](large-worlds.md)), use double, or keep positions near the origin. The "
+        "same flight in each precision, against the exact sum of the float steps (what the "
+        "position storage loses) and against the double particle (which also counts what the "
+        "float inputs themselves, 1/60 and each v t rounded to float, move the flight by):\n\n" + far_flight_table());
   print("\n## The exact pair in one step\n\n`damping::Exact` with `position::Exact`, the four shots in a single 5 s step: largest relative position error " +
         single_step_error() + " against the closed form.\n");
   print(R"(

@@ -212,24 +212,46 @@ inline long steps_for(const Scene& s, double h) { return std::lround(s.duration 
 
 /// Far from the origin: free flight at (10, 0, 5) m/s from (1e6, 0, 0) m for `steps` steps of
 /// h = 1/60 s, flown in float and in double. Returns the final positions (in double).
+/// Also flown: float with double positions and with compensated positions
+/// (Precision<float, double>, Precision<float, Compensated<float>>), and `exact`, the exact
+/// sum of the float steps (each step's float displacement, summed in long double).
 struct FarFlight {
   Vector3<double> single;  ///< the float particle's
   Vector3<double> twin;    ///< the double particle's
   double h = 0;            ///< the step, s
+  Vector3<double> wide;    ///< the float particle's with double positions
+  Vector3<double> pair;    ///< the float particle's with compensated positions
+  Vector3<double> exact;   ///< the exact sum of the float steps (rounded to double at the end)
 };
 inline FarFlight fly_far_from_origin(long steps) {
   const double h = 1.0 / 60;
   Particle<float, damping::None, position::Euler> single;
   Particle<double, damping::None, position::Euler> twin;
+  Particle<Precision<float, double>, damping::None, position::Euler> wide;
+  Particle<Precision<float, Compensated<float>>, damping::None, position::Euler> pair;
   single.set_position({1e6f, 0.0f, 0.0f});
   twin.set_position({1e6, 0.0, 0.0});
+  wide.set_position({1e6, 0.0, 0.0});
+  pair.set_position({1e6, 0.0, 0.0});
   single.set_velocity({10.0f, 0.0f, 5.0f});
   twin.set_velocity({10.0, 0.0, 5.0});
+  wide.set_velocity({10.0f, 0.0f, 5.0f});
+  pair.set_velocity({10.0f, 0.0f, 5.0f});
+  long double exact_x = 1e6L, exact_z = 0.0L;
   for (long n = 0; n < steps; ++n) {
     single.integrate(static_cast<float>(h));
     twin.integrate(h);
+    wide.integrate(static_cast<float>(h));
+    pair.integrate(static_cast<float>(h));
+    exact_x += static_cast<long double>(10.0f * static_cast<float>(h));  // Euler: v t in float
+    exact_z += static_cast<long double>(5.0f * static_cast<float>(h));
   }
-  return {widen(single.position()), twin.position(), h};
+  return {widen(single.position()),
+          twin.position(),
+          h,
+          wide.position(),
+          pair.position(),
+          {static_cast<double>(exact_x), 0.0, static_cast<double>(exact_z)}};
 }
 
 /// The reference for combination D on scene s: the closed form without a spring, Odeint

@@ -57,6 +57,11 @@ class SystemKernel {
  public:
   using Arrays = typename Layout::Arrays;
   using damping_factors = damping_factors_t<D, R>;
+  /// How positions are stored (precision.hpp): R as today, a wider Real, or Compensated<R>.
+  using position_storage = typename Layout::position_storage;
+  using position_element = typename Layout::position_element;
+  static constexpr bool plain_positions =
+      std::is_same_v<position_element, R> && !Layout::compensated_positions;
 
   /// What every particle's step shares: the duration, the uniform damping factors (d^t, ...)
   /// and the uniform acceleration, where the configuration has them.
@@ -107,8 +112,8 @@ class SystemKernel {
   /// The step of particle i, as Particle::integrate computes it:
   ///   a  = acceleration + force * inverse_mass;  v1 = D::velocity(v0, a, t, f);
   ///   p1 = P::position(p0, v0, v1, a, t, f);     force = 0;  age += t
-  /// on each of x, y and z (advance<D, P> in particle.hpp). A particle of inverse mass 0 does
-  /// not move. Plain arithmetic on the arrays: runs on a GPU as it runs here (see
+  /// on each of x, y and z (advance<D, P> in particle.hpp; with positions stored wider or
+  /// compensated, detail::advance_stored). A particle of inverse mass 0 does not move. Plain arithmetic on the arrays: runs on a GPU as it runs here (see
   /// docs/hardening.md for the compiler settings under which a device gives the same bits).
   POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void step_particle(
       const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
@@ -124,7 +129,25 @@ class SystemKernel {
       ay = parameters.acceleration.y;
       az = parameters.acceleration.z;
     }
-    if constexpr (Layout::has_forces) {
+    if constexpr (!plain_positions) {  // stored wider or compensated (precision.hpp)
+      bool movable = true;
+      if constexpr (Layout::has_forces) {
+        const R inverse_mass = arrays.inverse_mass[i];
+        ax = ax + arrays.force_x[i] * inverse_mass;
+        ay = ay + arrays.force_y[i] * inverse_mass;
+        az = az + arrays.force_z[i] * inverse_mass;
+        arrays.force_x[i] = R(0);
+        arrays.force_y[i] = R(0);
+        arrays.force_z[i] = R(0);
+        movable = inverse_mass > R(0);
+      }
+      advance_stored_if(movable, arrays.position_x[i], arrays.position_error_x, i,
+                        arrays.velocity_x[i], ax, t, factors);
+      advance_stored_if(movable, arrays.position_y[i], arrays.position_error_y, i,
+                        arrays.velocity_y[i], ay, t, factors);
+      advance_stored_if(movable, arrays.position_z[i], arrays.position_error_z, i,
+                        arrays.velocity_z[i], az, t, factors);
+    } else if constexpr (Layout::has_forces) {
       const R inverse_mass = arrays.inverse_mass[i];
       ax = ax + arrays.force_x[i] * inverse_mass;
       ay = ay + arrays.force_y[i] * inverse_mass;
@@ -231,6 +254,38 @@ class SystemKernel {
     advance<D, P>(p1, v1, a, t, factors);
     p = select_if_less(R(0), inverse_mass, p1, p);
     v = select_if_less(R(0), inverse_mass, v1, v);
+  }
+
+  // advance_if for a position stored wider or compensated; `error` is the error column
+  // (nullptr unless compensated).
+  template <class F>
+  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void advance_stored_if(
+      bool movable, position_element& p, R* error, std::size_t i, R& v, R a, R t,
+      const F& factors) noexcept {
+    position_element p1 = p;
+    R v1 = v;
+    R lo = R(0);
+    if constexpr (Layout::compensated_positions) lo = error[i];
+    R lo1 = lo;
+    advance_stored<D, P, position_storage>(p1, lo1, v1, a, t, factors);
+    p = select(movable, p1, p);
+    v = select(movable, v1, v);
+    if constexpr (Layout::compensated_positions) error[i] = select(movable, lo1, lo);
+  }
+
+  // condition ? if_true : if_false, as bit operations (g++ -O2 does not if-convert `?:` here).
+  template <class T>
+  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr T select(bool condition, T if_true,
+                                                                 T if_false) noexcept {
+    if constexpr (sizeof(T) == 4 || sizeof(T) == 8) {
+      using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+      const Bits mask = Bits(0) - static_cast<Bits>(condition);
+      return __builtin_bit_cast(
+          T, static_cast<Bits>((__builtin_bit_cast(Bits, if_true) & mask) |
+                               (__builtin_bit_cast(Bits, if_false) & ~mask)));
+    } else {
+      return condition ? if_true : if_false;
+    }
   }
 };
 

@@ -146,6 +146,24 @@ constexpr bool check_state(const char* function, const Vector3<R>& position,
   return false;
 }
 
+/// A finite value whose stored (narrower) form `stored` is finite too: a position set on a
+/// particle that stores it as Compensated<R> must lie within R's range.
+template <Real W, Real R>
+constexpr bool check_representable(const char* function, const char* argument,
+                                   const Vector3<W>& value, const Vector3<R>& stored) {
+  if (is_finite(stored)) return true;
+  report_vector(function, argument, "within the range of the position's stored Real", value);
+  return false;
+}
+
+/// A caller's buffer with room for `needed` elements.
+constexpr bool check_buffer(const char* function, const char* argument, std::size_t size,
+                            std::size_t needed) {
+  if (size >= needed) return true;
+  report_scalar(function, argument, ">= size() elements (its size is given)", size);
+  return false;
+}
+
 /// A range of live particles: begin <= end <= size.
 constexpr bool check_range(const char* function, std::size_t begin, std::size_t end,
                            std::size_t size) {

@@ -1,0 +1,233 @@
+// SPDX-License-Identifier: BSL-1.0
+// pointmass/precision.hpp — the precision of a particle's position, chosen apart from the
+// precision of everything else.
+//
+//   first template argument                      arithmetic  position stored as     per particle
+//   float                  (today)               float       float                  3 floats
+//   double                 (today)               double      double                 3 doubles
+//   Precision<float, double>                     float       double                 3 doubles
+//   Precision<float, Compensated<float>>         float       float + float error    6 floats
+//   Precision<float>       is float, Precision<double> is double (the same types)
+//
+// Velocity, acceleration, damping, mass, force and the step's arithmetic use the first
+// argument; only the stored position uses the second. A step computes the displacement
+// exactly as the all-float particle would (the position policy applied from p0 = 0 in the
+// arithmetic precision) and adds it to the stored position in the position's precision:
+//
+//   d  = P::position(0, v0, v1, a, t, f)         in float: the same float inputs as today
+//   p1 = p0 + d                                  in double, or compensated:
+//   Compensated<float>, hi + lo:  y = d + lo;  s = hi + y;  b = s - hi;
+//                                 lo = (hi - (s - b)) + (y - b);  hi = s
+//     (the error-free sum of hi and y, Knuth's TwoSum: lo carries what hi could not hold,
+//      and the next step adds it back, as compensated summation does)
+//
+// So far from the origin the position loses only what the wide storage rounds (about 1e-10 m
+// a step at 1e6 m), not the 1/32 m a float rounds there. Near the origin the velocities are
+// bit for bit those of the all-float particle, and the positions differ only by the float
+// rounding that all-float makes and the wide storage does not.
+//
+// A wide position is read and set as its value type (`position_value_t`): double for double
+// and for Compensated<float> (hi + lo rounded to double; a set double is split into hi and
+// lo), long double for Compensated<double>. A renderer wants a float position relative to
+// its camera: `position_relative_to(origin)` (Particle) and `positions_relative_to(origin,
+// buffer)` (ParticleSystem) compute it from the full stored position, exact wherever the true
+// offset is a float.
+//
+// Must not include: anything but config.hpp and real.hpp (it is below the quantities).
+#pragma once
+
+#include <concepts>
+#include <limits>
+#include <type_traits>
+
+#include "config.hpp"
+#include "real.hpp"
+
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
+
+/// A position stored as two R: the rounded position and the rounding error carried forward.
+/// Twice R's storage, nearly twice its digits; steps in R's own arithmetic (no wider type).
+template <Real R>
+struct Compensated {
+  using value_type = R;
+};
+
+namespace detail {
+
+template <class T>
+inline constexpr bool is_compensated_v = false;
+template <class R>
+inline constexpr bool is_compensated_v<Compensated<R>> = true;
+
+template <class T>
+struct CompensatedOf {
+  using type = void;
+};
+template <class R>
+struct CompensatedOf<Compensated<R>> {
+  using type = R;
+};
+
+}  // namespace detail
+
+/// A position precision usable with arithmetic R: a Real with at least R's digits, or
+/// Compensated<R> of R itself.
+template <class Position, class R>
+concept PositionPrecision =
+    Real<R> && ((Real<Position> && std::numeric_limits<Position>::digits >=
+                                       std::numeric_limits<R>::digits) ||
+                std::same_as<typename detail::CompensatedOf<Position>::type, R>);
+
+namespace detail {
+
+/// One sentence for a mismatched pair, instead of a page of unmet constraints.
+template <class R, class Position>
+constexpr bool check_position_precision() {
+  static_assert(PositionPrecision<Position, R>,
+                "Precision<Real, Position>: the position must be a Real at least as wide as "
+                "Real (Precision<float, double>) or Compensated<Real> of the same Real "
+                "(Precision<float, Compensated<float>>); a narrower position would round away "
+                "what the step computes");
+  return true;
+}
+
+}  // namespace detail
+
+/// Arithmetic in R, positions stored as Position (see the file comment): what
+/// Precision<R, Position> names when Position is not R.
+template <Real R, class Position>
+struct PositionsStoredAs {
+  static_assert(detail::check_position_precision<R, Position>());
+  using real = R;
+  using position = Position;
+};
+
+/// The precision of a particle: arithmetic in R, positions stored as Position. Give it as the
+/// first template argument of Particle, ParticleSystem or units::Particle. Precision<R> (and
+/// Precision<R, R>) is R itself, so today's spellings are today's types and a Particle<R>
+/// still lets generic code deduce R.
+template <Real R, class Position = R>
+using Precision =
+    std::conditional_t<std::is_same_v<R, Position>, R, PositionsStoredAs<R, Position>>;
+
+namespace detail {
+
+template <class S>
+struct PrecisionTraits {};
+template <Real R>
+struct PrecisionTraits<R> {
+  using real = R;
+  using position = R;
+};
+// Read through Precision's members, so that naming a mismatched Precision anywhere stops at
+// its one sentence (the static_assert in its body).
+template <Real R, class Position>
+struct PrecisionTraits<PositionsStoredAs<R, Position>> {
+  using real = typename PositionsStoredAs<R, Position>::real;
+  using position = typename PositionsStoredAs<R, Position>::position;
+};
+
+}  // namespace detail
+
+/// What a particle's first template argument may be: a Real, or a Precision<R, Position>
+/// whose position fits R.
+template <class S>
+concept PrecisionChoice = requires {
+  typename detail::PrecisionTraits<S>::real;
+  typename detail::PrecisionTraits<S>::position;
+} && PositionPrecision<typename detail::PrecisionTraits<S>::position,
+                       typename detail::PrecisionTraits<S>::real>;
+
+/// The arithmetic Real of a precision choice (velocity, acceleration, mass, time, ...).
+template <class S>
+using real_of_t = typename detail::PrecisionTraits<S>::real;
+/// The position precision of a choice: a Real or Compensated<R>.
+template <class S>
+using position_precision_of_t = typename detail::PrecisionTraits<S>::position;
+/// A choice in its shortest spelling: Precision<R, R> is R.
+template <class S>
+using canonical_precision_t =
+    std::conditional_t<std::is_same_v<real_of_t<S>, position_precision_of_t<S>>, real_of_t<S>,
+                       Precision<real_of_t<S>, position_precision_of_t<S>>>;
+
+namespace detail {
+
+/// How a position of precision Position is stored and stepped. For a Real: one number.
+template <class Position>
+struct PositionStorage {
+  /// The element of the position columns.
+  using element = Position;
+  /// What position() returns and set_position takes (per component).
+  using value = Position;
+  /// True when an error term is stored beside each component.
+  static constexpr bool compensated = false;
+
+  /// p + d, the displacement d (in the arithmetic's Real) added in the position's precision.
+  template <Real R>
+  POINTMASS_HD static constexpr void add(element& p, R d) noexcept {
+    p = p + static_cast<element>(d);
+  }
+  POINTMASS_HD static constexpr value value_of(element p) noexcept { return p; }
+  /// The stored component of a value (the value is already finite).
+  POINTMASS_HD static constexpr element element_of(value x) noexcept { return x; }
+  /// p - origin, rounded once to float: exact when the true offset is a float (then it is
+  /// an element too, and IEEE subtraction returns it exactly).
+  POINTMASS_HD static constexpr float relative(element p, value origin) noexcept {
+    return static_cast<float>(p - origin);
+  }
+};
+
+/// The next wider Real: what a pair of R is read as.
+template <class R>
+using wider_real_t = std::conditional_t<std::is_same_v<R, float>, double, long double>;
+
+/// A Compensated<R> position: hi (the element) and lo (the error term), hi + lo.
+template <Real R>
+struct PositionStorage<Compensated<R>> {
+  using element = R;
+  using value = wider_real_t<R>;
+  static constexpr bool compensated = true;
+
+  /// (hi, lo) + d. y = d + lo is the step's displacement with the carried error; TwoSum
+  /// adds it to hi and leaves in lo exactly what the new hi could not hold.
+  POINTMASS_HD static constexpr void add(R& hi, R& lo, R d) noexcept {
+    const R y = d + lo;
+    const R s = hi + y;
+    const R b = s - hi;
+    lo = (hi - (s - b)) + (y - b);
+    hi = s;
+  }
+  POINTMASS_HD static constexpr value value_of(R hi, R lo) noexcept {
+    return static_cast<value>(hi) + static_cast<value>(lo);
+  }
+  /// The rounded part of a value (the error part: error_of).
+  POINTMASS_HD static constexpr R element_of(value x) noexcept { return static_cast<R>(x); }
+  POINTMASS_HD static constexpr R error_of(value x) noexcept {
+    return static_cast<R>(x - static_cast<value>(static_cast<R>(x)));
+  }
+  /// hi + lo - origin: hi - origin = s + e exactly (TwoSum), s + lo = s2 + e2 exactly
+  /// (TwoSum), and the offset is s2 + (e + e2), rounded to float at the end. For a camera
+  /// near the particle (|origin| within a factor of two of |hi|) e is 0 and s2 is the offset
+  /// rounded once to double, so a float offset comes out exact; the error terms keep what the
+  /// double sums round away when the camera is far from the particle.
+  POINTMASS_HD static constexpr float relative(R hi, R lo, value origin) noexcept {
+    const value h = static_cast<value>(hi);
+    const value s = h - origin;
+    const value b = s - h;
+    const value e = (h - (s - b)) + (-origin - b);
+    const value l = static_cast<value>(lo);
+    const value s2 = s + l;
+    const value b2 = s2 - s;
+    const value e2 = (s - (s2 - b2)) + (l - b2);
+    return static_cast<float>(s2 + (e + e2));
+  }
+};
+
+}  // namespace detail
+
+/// What a position of precision choice S is read and set as, per component.
+template <class S>
+using position_value_t =
+    typename detail::PositionStorage<position_precision_of_t<S>>::value;
+
+}  // namespace pointmass

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Regenerates docs/large-worlds.md's measured tables: builds examples/large_worlds.cpp (the
+# drift of each position precision after 10^6 steps) and benchmarks/large_worlds_step.cpp (the
+# batch step's cost, all variants side by side in one run) in Release with -march=native,
+# runs them, and writes the tables between the document's markers.
+# Usage: scripts/large-worlds.sh [repetitions]      (build tree: $LARGE_WORLDS_BUILD or
+#                                                      build/large-worlds)
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev python3
+repetitions=${1:-9}
+build=${LARGE_WORLDS_BUILD:-"$POINTMASS_ROOT/build/large-worlds"}
+cmake -S "$POINTMASS_ROOT" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DPOINTMASS_BUILD_TESTS=OFF -DPOINTMASS_BUILD_EXAMPLES=ON -DPOINTMASS_BUILD_BENCHMARKS=ON \
+  -DCMAKE_CXX_FLAGS="-march=native" >/dev/null
+cmake --build "$build" --target large_worlds large_worlds_step >/dev/null
+doc="$POINTMASS_ROOT/docs/large-worlds.md"
+
+drift="$build/drift.md"
+"$build/examples/large_worlds" >"$drift"
+cat "$drift"
+replace_between_markers "$doc" drift "$drift"
+
+json=$(mktemp)
+trap 'rm -f "$json"' EXIT
+"$build/benchmarks/large_worlds_step" --benchmark_repetitions="$repetitions" \
+  --benchmark_enable_random_interleaving=true --benchmark_min_time=0.05 \
+  --benchmark_report_aggregates_only=true --benchmark_format=json >"$json"
+cost="$build/cost.md"
+python3 - "$json" "$repetitions" >"$cost" <<'PY'
+import json, sys
+data = json.load(open(sys.argv[1]))
+rate = {b["run_name"]: b["items_per_second"] / 1e6
+        for b in data["benchmarks"] if b.get("aggregate_name") == "median"}
+ctx = data["context"]
+print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; medians of "
+      f"{sys.argv[2]} interleaved repetitions (`scripts/large-worlds.sh {sys.argv[2]}`); "
+      "`ParticleSystem::step`, M particle-steps/s, and the cost against all-float in the same "
+      "run (time per step / all-float's).\n")
+sizes = ("1000", "100000", "10000000")
+targets = {"Double": ("<= 1.15", "<= 1.50", "<= 1.50"),
+           "Compensated": ("<= 1.30", "<= 1.50", "<= 1.50")}
+for kind, title in (("Sparks", "sparks: per-second damping, p + v t, gravity"),
+                    ("Shots", "artillery: damping::Exact, position::Exact, gravity")):
+    print(f"### {title}\n")
+    print("| positions | bytes per particle | 1,000 | 100,000 | 10,000,000 | cost at 1,000 | 100,000 | 10,000,000 | target |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for variant, label, size in (("Float", "float (today)", 24), ("Double", "`Precision<float, double>`", 36),
+                                 ("Compensated", "`Precision<float, Compensated<float>>`", 36)):
+        name = f"BM_Step<{variant}{kind}>"
+        cells = [f"{rate[f'{name}/{n}']:,.0f}" for n in sizes]
+        costs = [f"{rate[f'BM_Step<Float{kind}>/{n}'] / rate[f'{name}/{n}']:.2f}" for n in sizes]
+        target = " / ".join(targets[variant]) if variant in targets and kind == "Sparks" else ""
+        print(f"| {label} | {size} | " + " | ".join(cells) + " | " + " | ".join(costs) + f" | {target} |")
+    print()
+PY
+cat "$cost"
+replace_between_markers "$doc" cost "$cost"
+echo "updated docs/large-worlds.md"

@@ -1,0 +1,476 @@
+// SPDX-License-Identifier: BSL-1.0
+// Position precision (precision.hpp). Each variant — Precision<float, double> and
+// Precision<float, Compensated<float>> — against the exactly accumulated trajectory of the
+// same float inputs: the displacement an all-float particle computes each step (the position
+// policy from p0 = 0, read from a float particle reset to the origin before every step), summed
+// in long double (exact: the displacements' bits all lie above long double's ulp at 1e8 m).
+// Far from the origin, with and without drag, per-frame and per-second damping, every position
+// policy; Particle and ParticleSystem bit for bit; near the origin never worse than all-float;
+// render-relative positions exact; the precision pieces checked at compile time.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include <pointmass/pointmass.hpp>
+#include <pointmass/units.hpp>
+
+namespace pm = pointmass;
+using pm::Vector3;
+
+namespace {
+
+using DoublePositions = pm::Precision<float, double>;
+using CompensatedPositions = pm::Precision<float, pm::Compensated<float>>;
+
+// --- compile time --------------------------------------------------------------------------
+
+static_assert(pm::PositionPrecision<double, float>);
+static_assert(pm::PositionPrecision<float, float>);
+static_assert(pm::PositionPrecision<pm::Compensated<float>, float>);
+static_assert(!pm::PositionPrecision<float, double>, "narrower positions are refused");
+static_assert(!pm::PositionPrecision<pm::Compensated<double>, float>,
+              "a pair of another Real is refused");
+static_assert(!pm::PositionPrecision<int, float>);
+static_assert(pm::PrecisionChoice<float> && pm::PrecisionChoice<DoublePositions> &&
+              pm::PrecisionChoice<CompensatedPositions>);
+static_assert(!pm::PrecisionChoice<int>);
+// Precision<R> is R: today's spellings are today's types.
+static_assert(std::is_same_v<pm::Particle<pm::Precision<float>>, pm::Particle<float>>);
+static_assert(std::is_same_v<pm::Particle<pm::Precision<double, double>>, pm::Particle<double>>);
+static_assert(std::is_same_v<pm::Particle<float>::position_type, float>);
+static_assert(std::is_same_v<pm::Particle<DoublePositions>::position_type, double>);
+static_assert(std::is_same_v<pm::Particle<CompensatedPositions>::position_type, double>);
+static_assert(std::is_same_v<pm::Particle<DoublePositions>::real, float>);
+static_assert(std::is_same_v<pm::units::Particle<DoublePositions>::position_type,
+                             pm::units::length<double>>);
+static_assert(std::is_same_v<pm::units::Particle<DoublePositions>::length_type,
+                             pm::units::length<float>>);
+// Bytes per particle: six floats today; three doubles and three floats, or six floats and
+// three error floats (36 both: the 36/24).
+static_assert(pm::ParticleSystem<float>::storage_bytes_per_particle == 24);
+static_assert(pm::ParticleSystem<DoublePositions>::storage_bytes_per_particle == 36);
+static_assert(pm::ParticleSystem<CompensatedPositions>::storage_bytes_per_particle == 36);
+static_assert(pm::ParticleSystem<CompensatedPositions>::array_count == 9);
+static_assert(pm::ParticleSystem<CompensatedPositions>::stores<pm::Column::position_error_x>);
+static_assert(!pm::ParticleSystem<DoublePositions>::stores<pm::Column::position_error_x>);
+static_assert(std::is_same_v<pm::ParticleSystem<DoublePositions>::element_t<pm::Column::position_x>,
+                             double>);
+// The particle with Compensated<float> stores 3 floats more than the float one; with double
+// positions 3 doubles instead of 3 floats.
+static_assert(sizeof(pm::Particle<CompensatedPositions, pm::damping::None>) ==
+              sizeof(pm::Particle<float, pm::damping::None>) + 3 * sizeof(float));
+
+// --- the flights ---------------------------------------------------------------------------
+
+using Wide = long double;
+
+Vector3<Wide> widen(const Vector3<double>& v) { return {Wide(v.x), Wide(v.y), Wide(v.z)}; }
+Vector3<Wide> widen(const Vector3<float>& v) { return {Wide(v.x), Wide(v.y), Wide(v.z)}; }
+double distance(const Vector3<Wide>& a, const Vector3<Wide>& b) {
+  const Wide dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+  return static_cast<double>(std::sqrt(dx * dx + dy * dy + dz * dz));
+}
+double largest(const Vector3<Wide>& v) {
+  return static_cast<double>(std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z))));
+}
+/// The spacing of floats at |x|.
+double float_ulp(double x) {
+  return x < 1e-30 ? 1e-45 : std::ldexp(1.0, std::ilogb(x) - 23);
+}
+bool same_bits(float a, float b) {
+  return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
+}
+bool same_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+template <class T>
+bool same_bits(const Vector3<T>& a, const Vector3<T>& b) {
+  return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
+}
+
+struct Launch {
+  Vector3<double> start;
+  Vector3<float> velocity;
+  Vector3<float> acceleration;
+  float damping = 1.0f;
+  long steps = 0;
+};
+
+struct Result {
+  double drift = 0;            ///< |variant - exact| at the end, m
+  double float_drift = 0;      ///< |all-float - exact| at the end, m
+  double from_float = 0;       ///< largest |variant - all-float| over the run, m
+  double float_rounding = 0;   ///< what all-float's position roundings can add up to, m
+  double own_rounding = 0;     ///< what the variant's own roundings can add up to, m
+  bool velocities_as_float = true;  ///< the variant's velocity is all-float's, bit for bit
+  bool systems_as_particle = true;  ///< both systems' particles are the Particle's, bit for bit
+};
+
+template <class P>
+void configure(P& particle, const Launch& launch) {
+  particle.set_velocity(launch.velocity);
+  particle.set_acceleration(launch.acceleration);
+  if constexpr (P::stores_damping) particle.set_damping(launch.damping);
+}
+
+template <class System, class Particle>
+bool system_matches(const System& system, std::size_t i, const Particle& particle) {
+  const auto& a = system.arrays();
+  const Vector3<typename System::position_element> stored{a.position_x[i], a.position_y[i],
+                                                          a.position_z[i]};
+  bool same = same_bits(stored, particle.stored_position()) &&
+              same_bits(system.velocity(i), particle.velocity());
+  if constexpr (System::template stores<pm::Column::position_error_x>) {
+    same = same && same_bits(Vector3<float>{a.position_error_x[i], a.position_error_y[i],
+                                            a.position_error_z[i]},
+                             particle.stored_position_error());
+  }
+  return same;
+}
+
+/// Flies `launch` as the variant S (Particle, a uniform system and a featured one, each of
+/// 17 copies so that the vectorised loop and its remainder both run), as all-float, and as the
+/// exact sum of the float displacements.
+template <class S, class D, class P>
+Result fly(const Launch& launch) {
+  const float h = 1.0f / 60.0f;
+  pm::Particle<S, D, P> variant;
+  pm::Particle<float, D, P> plain;
+  pm::Particle<float, D, P> mover;  // reset to the origin before each step: its position after
+                                    // the step is the float displacement
+  variant.set_position(launch.start);
+  plain.set_position(Vector3<float>{static_cast<float>(launch.start.x),
+                                    static_cast<float>(launch.start.y),
+                                    static_cast<float>(launch.start.z)});
+  configure(variant, launch);
+  configure(plain, launch);
+  configure(mover, launch);
+
+  constexpr std::size_t copies = 17;
+  pm::ParticleSystem<S, D, P> uniform(copies);
+  if constexpr (decltype(uniform)::stores_damping) uniform.set_damping(launch.damping);
+  uniform.set_acceleration(launch.acceleration);
+  using Featured = std::conditional_t<
+      pm::Particle<float, D, P>::stores_damping,
+      pm::ParticleSystem<S, D, P, pm::features::PerParticleDamping, pm::features::ForceAccumulator,
+                         pm::features::PerParticleAcceleration>,
+      pm::ParticleSystem<S, D, P, pm::features::ForceAccumulator,
+                         pm::features::PerParticleAcceleration>>;
+  Featured featured(copies);
+  for (std::size_t k = 0; k < copies; ++k) {
+    uniform.spawn(variant);
+    featured.spawn(variant);
+  }
+
+  Result result;
+  Vector3<Wide> exact = widen(launch.start);
+  for (long n = 0; n < launch.steps; ++n) {
+    mover.set_position({});
+    mover.integrate(h);
+    const Vector3<float> d = mover.position();
+    exact += widen(d);
+    variant.integrate(h);
+    plain.integrate(h);
+    uniform.step(h);
+    featured.step(h);
+
+    const Vector3<Wide> p_plain = widen(plain.position());
+    const Vector3<Wide> p_variant = widen(variant.position());
+    // All-float rounds the position at each addition that involves p0 (two for the forms
+    // with an a t^2 term): half an ulp each, per component.
+    const int additions = std::is_same_v<P, pm::position::Kinematic> ||
+                                  std::is_same_v<P, pm::position::Exact>
+                              ? 2
+                              : 1;
+    result.float_rounding += std::sqrt(3.0) * additions * float_ulp(largest(p_plain)) / 2;
+    // The variant's own: double rounds p0 + d (half a double ulp); the pair rounds d + lo
+    // (half a float ulp of |d| + |lo|, |lo| at most half a float ulp of p).
+    const double p_size = largest(p_variant);
+    const double own = std::is_same_v<S, DoublePositions>
+                           ? std::ldexp(p_size, -53)
+                           : float_ulp(largest(widen(d)) + float_ulp(p_size)) / 2;
+    result.own_rounding += std::sqrt(3.0) * own;
+    result.from_float = std::max(result.from_float, distance(p_variant, p_plain));
+    result.velocities_as_float = result.velocities_as_float && same_bits(variant.velocity(), plain.velocity()) &&
+                                 same_bits(variant.velocity(), mover.velocity());
+    if (n % 4096 == 0 || n + 1 == launch.steps) {
+      for (std::size_t k : {std::size_t{0}, copies - 1}) {
+        result.systems_as_particle = result.systems_as_particle &&
+                                     system_matches(uniform, k, variant) &&
+                                     system_matches(featured, k, variant);
+      }
+    }
+  }
+  result.drift = distance(widen(variant.position()), exact);
+  result.float_drift = distance(widen(plain.position()), exact);
+  return result;
+}
+
+constexpr double millimetre = 1e-3;
+
+// The free flight of docs/accuracy.md, the artillery shot (gravity, per-second drag), sparks
+// (per-frame drag): 10^6 steps of 1/60 s (4.6 hours) from 1e6 m, or at 1e8 m.
+Launch free_flight(double from) { return {{from, 0, 0}, {10, 0, 5}, {0, 0, 0}, 1.0f, 1'000'000}; }
+Launch artillery(double from) {
+  return {{from, 0, from / 4}, {300, 400, 0}, {0, -9.81f, 0}, 0.9f, 1'000'000};
+}
+Launch sparks(double from) {
+  return {{0, from, 0}, {3, 8, -2}, {0, -9.81f, 0}, 0.995f, 1'000'000};
+}
+
+/// At 1e6 m both variants hold the target, 1 mm. At 1e8 m double positions still do;
+/// a float pair resolves 2^-48 of the position (0.4 um at 1e8 m), and its roundings of
+/// d + lo, which a steady flight repeats with a bias, add up to centimetres over 10^6 steps
+/// (docs/large-worlds.md): there it is held to what those roundings allow.
+template <class S, class D, class P>
+void check_far(const Launch& launch) {
+  const Result r = fly<S, D, P>(launch);
+  MESSAGE("drift ", r.drift, " m (all-float ", r.float_drift, " m; own rounding bound ",
+          r.own_rounding, " m)");
+  const bool planet = largest(widen(launch.start)) > 1e7;
+  if (!planet || std::is_same_v<S, DoublePositions>) CHECK(r.drift <= millimetre);
+  CHECK(r.drift <= r.own_rounding);  // what the variant's own roundings allow
+  CHECK(r.velocities_as_float);
+  CHECK(r.systems_as_particle);
+}
+
+}  // namespace
+
+TEST_CASE_TEMPLATE("far from the origin: within 1 mm of the exact sum of the float steps", S,
+                   DoublePositions, CompensatedPositions) {
+  namespace d = pm::damping;
+  namespace p = pm::position;
+  SUBCASE("free flight from 1e6 m, no drag") { check_far<S, d::None, p::Euler>(free_flight(1e6)); }
+  SUBCASE("free flight from 1e8 m, no drag") {
+    check_far<S, d::None, p::Kinematic>(free_flight(1e8));
+  }
+  SUBCASE("artillery from 1e6 m, per-second drag (Exact, Exact)") {
+    check_far<S, d::Exact, p::Exact>(artillery(1e6));
+  }
+  SUBCASE("artillery from 1e8 m, per-second drag (PerSecond, Euler)") {
+    check_far<S, d::PerSecond, p::Euler>(artillery(1e8));
+  }
+  SUBCASE("sparks from 1e6 m, per-frame drag (PerFrame, Kinematic)") {
+    check_far<S, d::PerFrame, p::Kinematic>(sparks(1e6));
+  }
+  SUBCASE("artillery from 1e6 m, the reference engine's drag (AccelerateThenDamp, SemiImplicit)") {
+    check_far<S, d::AccelerateThenDamp, p::SemiImplicit>(artillery(1e6));
+  }
+}
+
+TEST_CASE("far from the origin: all-float drifts by kilometres on the same flight") {
+  // What the variants are for: the same run in all-float (docs/accuracy.md's 25 km).
+  const Result r = fly<DoublePositions, pm::damping::None, pm::position::Euler>(free_flight(1e6));
+  MESSAGE("all-float drift ", r.float_drift, " m");
+  CHECK(r.float_drift > 1000.0);
+  CHECK(r.drift < r.float_drift * 1e-6);
+}
+
+TEST_CASE_TEMPLATE("near the origin: never worse than all-float beyond its position rounding", S,
+                   DoublePositions, CompensatedPositions) {
+  namespace d = pm::damping;
+  namespace p = pm::position;
+  const auto check_near = []<class D, class P>(const Launch& launch) {
+    const Result r = fly<S, D, P>(launch);
+    MESSAGE("from all-float ", r.from_float, " m (its rounding ", r.float_rounding,
+            " m); drift ", r.drift, " m against all-float's ", r.float_drift, " m");
+    CHECK(r.velocities_as_float);
+    CHECK(r.systems_as_particle);
+    // The variant and all-float differ by all-float's rounding of the positions (and the
+    // variant's own, far smaller).
+    CHECK(r.from_float <= r.float_rounding + r.own_rounding);
+    // Never worse against the exact sum than all-float, beyond the variant's own rounding.
+    CHECK(r.drift <= r.float_drift + r.own_rounding);
+  };
+  // A ten-second shot from the origin (600 steps), and 10^4 steps of sparks near it.
+  const Launch shot{{0, 0, 0}, {30, 40, 0}, {0, -9.81f, 0}, 0.9f, 600};
+  const Launch near_sparks{{0.5, 1.0, -0.25}, {3, 8, -2}, {0, -9.81f, 0}, 0.995f, 10'000};
+  check_near.template operator()<d::Exact, p::Exact>(shot);
+  check_near.template operator()<d::PerSecond, p::Euler>(shot);
+  check_near.template operator()<d::None, p::Kinematic>(shot);
+  check_near.template operator()<d::PerFrame, p::SemiImplicit>(near_sparks);
+}
+
+// --- render-relative positions --------------------------------------------------------------
+
+TEST_CASE("render-relative: double positions, exact wherever the true offset is a float") {
+  std::mt19937_64 random(16);
+  std::uniform_real_distribution<double> far(-1e8, 1e8);
+  std::uniform_real_distribution<float> offset(-5000.0f, 5000.0f);
+  pm::Particle<DoublePositions> particle;
+  pm::ParticleSystem<DoublePositions> system(64);
+  std::vector<Vector3<double>> origins;
+  std::vector<Vector3<float>> offsets;
+  int checked = 0;
+  for (int n = 0; n < 64; ++n) {
+    const Vector3<double> p{far(random), far(random), far(random)};
+    const Vector3<float> t{offset(random), offset(random), offset(random)};
+    const Vector3<double> o{p.x - double(t.x), p.y - double(t.y), p.z - double(t.z)};
+    // Keep the cases where the camera is a double exactly p - t away.
+    if (Wide(o.x) != Wide(p.x) - Wide(t.x) || Wide(o.y) != Wide(p.y) - Wide(t.y) ||
+        Wide(o.z) != Wide(p.z) - Wide(t.z)) {
+      continue;
+    }
+    particle.set_position(p);
+    CHECK(same_bits(particle.position_relative_to(o), t));
+    system.spawn(p, {});
+    origins.push_back(o);
+    offsets.push_back(t);
+    ++checked;
+  }
+  CHECK(checked > 32);
+  for (std::size_t i = 0; i < system.size(); ++i) {
+    CHECK(same_bits(system.position_relative_to(i, origins[i]), offsets[i]));
+  }
+}
+
+TEST_CASE("render-relative: compensated positions, from hi + lo, exact wherever the offset is a float") {
+  // Particles that have flown (so lo carries real error terms), cameras at hi + lo - t for
+  // random float offsets t (kept where that is a double).
+  std::mt19937_64 random(15);
+  std::uniform_real_distribution<float> speed(-300.0f, 300.0f);
+  std::uniform_real_distribution<float> offset(-2000.0f, 2000.0f);
+  pm::ParticleSystem<CompensatedPositions, pm::damping::None> system(40);
+  for (int n = 0; n < 40; ++n) {
+    system.spawn({1e6 * (n + 1), -3e7 + 1e5 * n, 12345.678 * n},
+                 {speed(random), speed(random), speed(random)});
+  }
+  for (int k = 0; k < 1000; ++k) system.step(1.0f / 60.0f);
+
+  std::vector<Vector3<float>> buffer(system.size());
+  int checked = 0;
+  int with_error_term = 0;
+  for (int round = 0; round < 20; ++round) {
+    const Vector3<float> t{offset(random), offset(random), offset(random)};
+    const auto& a = system.arrays();
+    // One camera for the whole system, placed for particle j; every other particle's offset is
+    // checked against the exact offset rounded once to float.
+    const std::size_t j = static_cast<std::size_t>(round) % system.size();
+    const Vector3<Wide> true_position{Wide(a.position_x[j]) + Wide(a.position_error_x[j]),
+                                      Wide(a.position_y[j]) + Wide(a.position_error_y[j]),
+                                      Wide(a.position_z[j]) + Wide(a.position_error_z[j])};
+    const Vector3<Wide> wanted{true_position.x - Wide(t.x), true_position.y - Wide(t.y),
+                               true_position.z - Wide(t.z)};
+    const Vector3<double> camera{double(wanted.x), double(wanted.y), double(wanted.z)};
+    if (Wide(camera.x) != wanted.x || Wide(camera.y) != wanted.y || Wide(camera.z) != wanted.z) {
+      continue;
+    }
+    with_error_term += a.position_error_x[j] != 0.0f;
+    system.positions_relative_to(camera, buffer);
+    CHECK(same_bits(buffer[j], t));
+    CHECK(same_bits(system.position_relative_to(j, camera), t));
+    for (std::size_t i = 0; i < system.size(); ++i) {
+      const Vector3<float> rounded{
+          static_cast<float>(Wide(a.position_x[i]) + Wide(a.position_error_x[i]) - Wide(camera.x)),
+          static_cast<float>(Wide(a.position_y[i]) + Wide(a.position_error_y[i]) - Wide(camera.y)),
+          static_cast<float>(Wide(a.position_z[i]) + Wide(a.position_error_z[i]) - Wide(camera.z))};
+      // Within one float rounding of the exact offset (rounded twice at most: the last sum
+      // in double, then to float).
+      CHECK(std::abs(double(buffer[i].x) - double(rounded.x)) <= float_ulp(std::abs(double(rounded.x))));
+      CHECK(std::abs(double(buffer[i].y) - double(rounded.y)) <= float_ulp(std::abs(double(rounded.y))));
+      CHECK(std::abs(double(buffer[i].z) - double(rounded.z)) <= float_ulp(std::abs(double(rounded.z))));
+    }
+    ++checked;
+  }
+  CHECK(checked >= 10);
+  CHECK(with_error_term > 0);
+}
+
+TEST_CASE("render-relative: a particle and the system agree, and a short buffer writes nothing") {
+  pm::Particle<CompensatedPositions, pm::damping::None> particle;
+  particle.set_position({4.0e7, 1.0, -2.5e6});
+  particle.set_velocity({250.0f, -30.0f, 17.0f});
+  pm::ParticleSystem<CompensatedPositions, pm::damping::None> system(4);
+  system.spawn(particle);
+  system.spawn(particle);
+  for (int k = 0; k < 5000; ++k) {
+    particle.integrate(1.0f / 60.0f);
+    system.step(1.0f / 60.0f);
+  }
+  const Vector3<double> camera{4.0e7 + 20000.0, 0.0, -2.5e6};
+  std::vector<Vector3<float>> buffer(2);
+  system.positions_relative_to(camera, buffer);
+  CHECK(same_bits(buffer[0], particle.position_relative_to(camera)));
+  CHECK(same_bits(buffer[1], particle.position_relative_to(camera)));
+
+  std::vector<Vector3<float>> short_buffer(1, Vector3<float>{7.0f, 7.0f, 7.0f});
+  CHECK_THROWS_WITH_AS(system.positions_relative_to(camera, short_buffer),
+                       doctest::Contains("positions_relative_to: argument 'buffer'"),
+                       std::invalid_argument);
+  CHECK(same_bits(short_buffer[0], Vector3<float>{7.0f, 7.0f, 7.0f}));
+}
+
+TEST_CASE("spawn(particle) copies a compensated position's error term: the system goes on bit for bit") {
+  pm::Particle<CompensatedPositions, pm::damping::PerSecond, pm::position::Kinematic> particle;
+  particle.set_position({3.0e6, -1.0e6, 5.0e5});
+  particle.set_velocity({123.0f, 45.0f, -67.0f});
+  particle.set_acceleration(pm::gravity<float>());
+  particle.set_damping(0.8f);
+  for (int k = 0; k < 1000; ++k) particle.integrate(1.0f / 60.0f);
+  REQUIRE(particle.stored_position_error().x != 0.0f);  // lo carries something by now
+  pm::ParticleSystem<CompensatedPositions, pm::damping::PerSecond, pm::position::Kinematic> system(1);
+  system.set_acceleration(pm::gravity<float>());
+  system.set_damping(0.8f);
+  system.spawn(particle);
+  for (int k = 0; k < 1000; ++k) {
+    particle.integrate(1.0f / 60.0f);
+    system.step(1.0f / 60.0f);
+  }
+  CHECK(system_matches(system, 0, particle));
+}
+
+// --- setting positions -------------------------------------------------------------------------
+
+TEST_CASE("set_position on compensated positions: split into hi + lo, beyond float's range refused") {
+  pm::Particle<CompensatedPositions> particle;
+  const double wanted = 16777216.0 + 0.375;  // 2^24 + 3/8: a float holds 2^24, lo 3/8
+  particle.set_position({wanted, -wanted, 1.0});
+  CHECK(particle.position().x == wanted);
+  CHECK(particle.position().y == -wanted);
+  CHECK(particle.stored_position().x == 16777216.0f);
+  CHECK(particle.stored_position_error().x == 0.375f);
+
+  CHECK_THROWS_WITH_AS(particle.set_position({1e39, 0.0, 0.0}),
+                       doctest::Contains("set_position: argument 'position'"),
+                       std::invalid_argument);
+  CHECK(particle.position().x == wanted);  // unchanged
+
+  pm::ParticleSystem<CompensatedPositions> system(2);
+  CHECK_THROWS_AS(system.spawn({0.0, -1e40, 0.0}, {}), std::invalid_argument);
+  CHECK(system.size() == 0);
+  const std::size_t i = system.spawn({wanted, 0.0, 0.0}, {});
+  CHECK(system.position(i).x == wanted);
+  CHECK_THROWS_AS(system.set_position(i, {0.0, 0.0, 5e38}), std::invalid_argument);
+  CHECK(system.position(i).x == wanted);
+}
+
+// --- the units face ----------------------------------------------------------------------------
+
+TEST_CASE_TEMPLATE("units face: a Precision particle of SI quantities steps as the plain one", S,
+                   DoublePositions, CompensatedPositions) {
+  namespace si = boost::units::si;
+  pm::units::Particle<S, pm::damping::Exact, pm::position::Exact> typed;
+  pm::Particle<S, pm::damping::Exact, pm::position::Exact> plain;
+  typed.set_position(Vector3<double>{1e7, 2e3, -5e6} * si::meters);
+  plain.set_position({1e7, 2e3, -5e6});
+  typed.set_velocity(Vector3<float>{300, 400, 0} * si::meters_per_second);
+  plain.set_velocity({300, 400, 0});
+  typed.set_acceleration(pm::units::gravity<float>());
+  plain.set_acceleration(pm::gravity<float>());
+  typed.set_damping(0.9f);
+  plain.set_damping(0.9f);
+  for (int k = 0; k < 3000; ++k) {
+    typed.integrate(1.0f / 60.0f * si::seconds);
+    plain.integrate(1.0f / 60.0f);
+  }
+  CHECK(same_bits(typed.stored_position(), plain.stored_position()));
+  CHECK(same_bits(typed.velocity().x.value(), plain.velocity().x));
+  CHECK(same_bits(typed.position().y.value(), plain.position().y));
+  CHECK(same_bits(typed.position_relative_to(Vector3<double>{1e7, 0, -5e6} * si::meters),
+                  plain.position_relative_to({1e7, 0, -5e6})));
+}
