@@ -48,6 +48,7 @@
 #include <array>
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 
 #include "config.hpp"
 #include "detail/soa_block.hpp"
@@ -153,6 +154,13 @@ class KokkosSystem {
   KokkosSystem() = default;
   /// A copy of `system`'s particles (every stored array) and uniform values in MemorySpace.
   explicit KokkosSystem(const System& system) { copy_from(system); }
+  // Not copyable: a copy of the Views would share the arrays with the original while each
+  // kept a particle count of its own. Movable.
+  KokkosSystem(const KokkosSystem&) = delete;
+  KokkosSystem& operator=(const KokkosSystem&) = delete;
+  KokkosSystem(KokkosSystem&&) noexcept = default;
+  KokkosSystem& operator=(KokkosSystem&&) noexcept = default;
+  ~KokkosSystem() = default;
 
   std::size_t size() const noexcept { return arrays_.size; }
   bool empty() const noexcept { return size() == 0; }
@@ -201,7 +209,7 @@ class KokkosSystem {
       Kokkos::deep_copy(Unmanaged<T>(to, count), Unmanaged<T>(from, count));
     });
     grown.settings_ = settings_;
-    *this = grown;
+    *this = std::move(grown);
   }
 
   /// The raw arrays in MemorySpace, for loops of your own over System::step_particle.

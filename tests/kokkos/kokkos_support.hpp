@@ -154,7 +154,7 @@ void check_pair() {
     (
         [&] {
           using System = typename decltype(system)::type;
-          INFO("configuration: ", typeid(System).name());
+          INFO("configuration: ", doctest::String(typeid(System).name()));
           std::uint32_t seed = 11;
           for (const std::size_t count : sizes_around_the_block) {
             check_equivalence<System>(count, 1000, seed++);

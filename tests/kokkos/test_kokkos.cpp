@@ -5,6 +5,7 @@
 #include "kokkos_support.hpp"
 
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 using namespace pointmass;
@@ -17,6 +18,10 @@ using Featured = ParticleSystem<double, damping::PerSecond, position::Kinematic,
                                 features::PerParticleDamping, features::PerParticleAcceleration,
                                 features::ForceAccumulator, features::Lifetime>;
 using Sparks = ParticleSystem<float, damping::PerSecond, position::Euler, features::Lifetime>;
+
+// A copy would share the arrays while keeping a count of its own: moves only.
+static_assert(!std::is_copy_constructible_v<DeviceSystem<Sparks>>);
+static_assert(std::is_nothrow_move_constructible_v<DeviceSystem<Sparks>>);
 
 }  // namespace
 
@@ -48,7 +53,7 @@ TEST_CASE("copy_from and copy_to carry every stored array and the uniform values
   CHECK(back.acceleration() == Vector3<float>{1.0f, 2.0f, 3.0f});
 }
 
-TEST_CASE("reserve keeps the particles; copy_from into a smaller capacity grows") {
+TEST_CASE("reserve keeps the particles, and copy_from into a smaller capacity grows") {
   const Featured host = test::make_scene<Featured>(50, 2);
   DeviceSystem<Featured> device(host);
   device.reserve(5000);
@@ -121,7 +126,7 @@ TEST_CASE("view<C> is the array C of the live particles") {
   CHECK(damping.data() == device.arrays().damping);
 }
 
-TEST_CASE("a zero duration changes nothing; a bad one is reported and changes nothing") {
+TEST_CASE("a zero duration changes nothing, and a bad one is reported and changes nothing") {
   const Featured host = test::make_scene<Featured>(20, 7);
   DeviceSystem<Featured> device(host);
   device.step(Space(), 0.0);
