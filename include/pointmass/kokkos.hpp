@@ -16,7 +16,8 @@
 // ParticleSystem (every array the configuration stores, found through the layout's table,
 // detail::SystemLayout::for_each_array and for_each_array_pair: an array added to the table
 // comes along without an edit here), steps them with Kokkos::parallel_for over
-// ParticleSystem::step_particle in any execution space that can reach MemorySpace, and
+// ParticleSystem::step_particle in any execution space that can reach MemorySpace (on the
+// host by chunks through the library's vectorised loop over step_particle), and
 // expires particles (Lifetime) in that execution space too.
 //
 // The same results. Every particle's step is ParticleSystem::step_particle, the function
@@ -80,6 +81,51 @@ struct KokkosStep {
     System::step_particle(arrays, i, parameters);
   }
 };
+
+// The host backends' loop: chunks of particles, each through the library's vectorised loop
+// (System::step_range, step_particle over the chunk), as pointmass::step(par_unseq, ...) does.
+template <class System>
+struct KokkosStepChunks {
+  static constexpr std::size_t chunk = 16384;
+  typename System::Arrays arrays;
+  typename System::StepParameters parameters;
+  void operator()(std::size_t c) const {
+    const std::size_t begin = c * chunk;
+    const std::size_t end = arrays.size - begin < chunk ? arrays.size : begin + chunk;
+    System::step_range(arrays, begin, end, parameters);
+  }
+};
+
+/// True when ExecutionSpace runs on the host (its memory is the host's): KokkosSystem::step
+/// then steps chunks through the vectorised loop, elsewhere one particle per index.
+template <class ExecutionSpace>
+inline constexpr bool kokkos_host_space_v =
+    Kokkos::SpaceAccessibility<Kokkos::HostSpace,
+                               typename ExecutionSpace::memory_space>::accessible;
+
+/// One step of `arrays` in `space`, one particle per index of a Kokkos::parallel_for over
+/// System::step_particle: KokkosSystem::step's loop on a device.
+template <class System, class ExecutionSpace>
+void kokkos_step_each(const ExecutionSpace& space, const typename System::Arrays& arrays,
+                      const typename System::StepParameters& parameters) {
+  Kokkos::parallel_for(
+      "pointmass::KokkosSystem::step",
+      Kokkos::RangePolicy<ExecutionSpace, Kokkos::IndexType<std::size_t>>(space, 0, arrays.size),
+      KokkosStep<System>{arrays, parameters});
+}
+
+/// One step of `arrays` in `space`, by chunks of 16,384 particles through the vectorised
+/// loop: KokkosSystem::step's loop on the host. The same results as kokkos_step_each.
+template <class System, class ExecutionSpace>
+void kokkos_step_chunks(const ExecutionSpace& space, const typename System::Arrays& arrays,
+                        const typename System::StepParameters& parameters) {
+  constexpr std::size_t chunk = KokkosStepChunks<System>::chunk;
+  Kokkos::parallel_for(
+      "pointmass::KokkosSystem::step",
+      Kokkos::RangePolicy<ExecutionSpace, Kokkos::IndexType<std::size_t>>(
+          space, 0, (arrays.size + chunk - 1) / chunk),
+      KokkosStepChunks<System>{arrays, parameters});
+}
 
 template <class System>
 struct KokkosCountExpired {
@@ -231,7 +277,10 @@ class KokkosSystem {
   }
 
   /// Advances every particle by `duration` seconds in `space` (Kokkos::parallel_for over
-  /// System::step_particle), then expires those whose lifetime is over (Lifetime), as
+  /// System::step_particle: on a device one particle per index; on the host by chunks of
+  /// 16,384 through the library's vectorised loop, System::step_range: a loop of one call
+  /// per index is not vectorised, and measured half the speed in float), then expires those whose
+  /// lifetime is over (Lifetime), as
   /// ParticleSystem::step does, with its results. A negative, NaN or infinite duration is a
   /// contract violation, checked when POINTMASS_CHECKS is on; zero changes nothing. Returns
   /// when the step is complete (space.fence()).
@@ -246,8 +295,11 @@ class KokkosSystem {
     if (!detail::check_duration("KokkosSystem::step", duration)) return;
 #endif
     if (real_equal(duration, real(0)) || empty()) return;
-    Kokkos::parallel_for("pointmass::KokkosSystem::step", policy(space, size()),
-                         detail::KokkosStep<System>{arrays_, step_parameters(duration)});
+    if constexpr (detail::kokkos_host_space_v<ExecutionSpace>) {
+      detail::kokkos_step_chunks<System>(space, arrays_, step_parameters(duration));
+    } else {
+      detail::kokkos_step_each<System>(space, arrays_, step_parameters(duration));
+    }
     expire(space);
     space.fence();
   }

@@ -92,8 +92,8 @@ System make_scene(std::size_t count, std::uint32_t seed) {
   return system;
 }
 
-/// Steps a ParticleSystem (ParticleSystem::step) and a KokkosSystem (Kokkos, in Space) from
-/// the same scene of `count` particles `steps` times, then copies the Kokkos arrays back and
+/// Steps a ParticleSystem (ParticleSystem::step) and two KokkosSystems (Kokkos, in Space:
+/// KokkosSystem::step, and the device's loop of one particle per index) from the same scene of `count` particles `steps` times, then copies the Kokkos arrays back and
 /// checks that they equal the host's bit for bit, that the particles moved, and that
 /// lifetimes expired particles (the same ones, in the same order: every array is compared).
 template <class System>
@@ -102,15 +102,22 @@ void check_equivalence(std::size_t count, int steps, std::uint32_t seed) {
   CAPTURE(count);
   System host = make_scene<System>(count, seed);
   DeviceSystem<System> device(host);
+  // The loop KokkosSystem::step runs on a device (one particle per index), run here too.
+  DeviceSystem<System> each(host);
   REQUIRE(device.size() == count);
   const Vector3<R> start = host.position(count - 1);
   for (int step = 0; step < steps; ++step) {
     const R t = durations<R>[static_cast<std::size_t>(step) % durations<R>.size()];
     host.step(t);
     device.step(Space(), t);
+    detail::kokkos_step_each<System>(Space(), each.arrays(), each.step_parameters(t));
+    each.expire(Space());
   }
   System back;
   device.copy_to(back);
+  REQUIRE(back.size() == host.size());
+  CHECK(same_arrays(back, host));
+  each.copy_to(back);
   REQUIRE(back.size() == host.size());
   CHECK(same_arrays(back, host));
   if constexpr (System::has_lifetime) {
