@@ -154,26 +154,26 @@ struct FeatureSets {
 /// Sizes around the vector block (16) and the backward walk's chunk (256).
 inline constexpr std::array<std::size_t, 6> sizes_around_the_block = {15, 16, 17, 255, 256, 257};
 
+/// One configuration at every size, 1,000 steps.
+template <class System>
+void check_configuration() {
+  INFO("configuration: ", doctest::String(typeid(System).name()));
+  std::uint32_t seed = 11;
+  for (const std::size_t count : sizes_around_the_block) {
+    check_equivalence<System>(count, 1000, seed++);
+  }
+}
+
+template <class... Systems>
+void check_configurations(std::tuple<Systems...>*) {
+  (check_configuration<Systems>(), ...);
+}
+
 /// Every feature set of policy pair (D, P), float and double, at every size, 1,000 steps.
 template <class D, class P>
 void check_pair() {
-  auto run = [](auto... system) {
-    (
-        [&] {
-          using System = typename decltype(system)::type;
-          INFO("configuration: ", doctest::String(typeid(System).name()));
-          std::uint32_t seed = 11;
-          for (const std::size_t count : sizes_around_the_block) {
-            check_equivalence<System>(count, 1000, seed++);
-          }
-        }(),
-        ...);
-  };
-  auto wrap = []<class... S>(std::tuple<S...>*) {
-    return std::tuple<std::type_identity<S>...>{};
-  };
-  std::apply(run, wrap(static_cast<typename FeatureSets<float, D, P>::type*>(nullptr)));
-  std::apply(run, wrap(static_cast<typename FeatureSets<double, D, P>::type*>(nullptr)));
+  check_configurations(static_cast<typename FeatureSets<float, D, P>::type*>(nullptr));
+  check_configurations(static_cast<typename FeatureSets<double, D, P>::type*>(nullptr));
 }
 
 }  // namespace pointmass::test

@@ -74,7 +74,9 @@ TEST_CASE("expiry leaves the survivors in swap-remove's order") {
   Sparks host(8);
   for (int i = 0; i < 8; ++i) host.spawn({float(i), 0.0f, 0.0f}, {});
   host.set_acceleration({});
-  for (const std::size_t i : {1, 2, 6}) host.set_lifetime(i, 0.01f);
+  for (const std::size_t i : {std::size_t{1}, std::size_t{2}, std::size_t{6}}) {
+    host.set_lifetime(i, 0.01f);
+  }
   DeviceSystem<Sparks> device(host);
   device.step(Space(), 0.5f);
   Sparks back;
