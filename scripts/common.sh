@@ -4,7 +4,8 @@
 # The Debian packages a full build and test run needs.
 POINTMASS_PACKAGES=(cmake ninja-build g++ clang libclang-rt-14-dev libboost-dev doctest-dev
                     libbenchmark-dev libtbb-dev gnuplot-nox doxygen pkg-config
-                    libglm-dev libeigen3-dev)  # the last two: test-only (tests/packaging/user_vectors)
+                    libglm-dev libeigen3-dev  # test-only (tests/packaging/user_vectors)
+                    libtrilinos-kokkos-dev)  # pointmass::kokkos and tests/kokkos (Serial backend)
 
 # Installs those of the named Debian packages that are missing (apt-get update first, once).
 ensure_packages() {

@@ -562,13 +562,14 @@ class ParticleSystem
     }
   }
 
- private:
-  // Expired: the age reached a finite lifetime (an infinite one never expires, even when the
-  // age itself overflows to infinity).
-  static constexpr bool expired(R age, R lifetime) noexcept {
+  /// True when a particle of this `age` and `lifetime` has expired: its age reached a finite
+  /// lifetime (an infinite one never expires, even when the age itself overflows to
+  /// infinity). finish_step's test, for loops of one's own (pointmass/kokkos.hpp).
+  POINTMASS_HD static constexpr bool expired(R age, R lifetime) noexcept {
     return (age >= lifetime) & (lifetime < real_infinity<R>);
   }
 
+ private:
   bool valid_index([[maybe_unused]] const char* function,
                    [[maybe_unused]] std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
 #if POINTMASS_HOST_CHECKS

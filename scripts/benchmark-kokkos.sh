@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Regenerates the Kokkos table of docs/performance.md: builds benchmarks/kokkos/kokkos_step.cpp
+# with -O3 -march=native (Release), runs it with interleaved repetitions, prints the medians
+# at 10,000,000 particles (M particle-steps/s) and their ratios as Markdown, and writes them
+# into docs/performance.md between the kokkos markers.
+# Usage: scripts/benchmark-kokkos.sh [repetitions]
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev libtbb-dev python3 \
+  libtrilinos-kokkos-dev
+repetitions=${1:-10}
+build="$POINTMASS_ROOT/build/benchmark-kokkos"
+cmake -S "$POINTMASS_ROOT" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DPOINTMASS_BUILD_TESTS=OFF -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_BENCHMARKS=ON \
+  -DCMAKE_CXX_FLAGS="-march=native" >/dev/null
+cmake --build "$build" --target kokkos_step >/dev/null
+json=$(mktemp)
+trap 'rm -f "$json"' EXIT
+"$build/benchmarks/kokkos_step" --benchmark_filter=/10000000/ \
+  --benchmark_repetitions="$repetitions" --benchmark_enable_random_interleaving=true \
+  --benchmark_min_time=0.5 --benchmark_report_aggregates_only=true \
+  --benchmark_format=json >"$json"
+tables="$build/tables.md"
+python3 - "$json" "$repetitions" >"$tables" <<'PY'
+import json, sys
+data = json.load(open(sys.argv[1]))
+rate = {b["run_name"]: b["items_per_second"] / 1e6
+        for b in data["benchmarks"] if b.get("aggregate_name") == "median"}
+ctx = data["context"]
+print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; medians of "
+      f"{sys.argv[2]} interleaved repetitions (`scripts/benchmark-kokkos.sh {sys.argv[2]}`), "
+      "M particle-steps/s at 10,000,000 particles, `ParticleSystem<R>` (uniform per-second "
+      "damping and gravity).\n")
+def key(name, real):
+    return f"{name.replace('%s', real)}/10000000/real_time"
+rows = [("`ParticleSystem<R>::step`, 1 thread", "BM_SystemStep<%s>"),
+        ("Kokkos Serial, `KokkosSystem::step`, 1 thread", "BM_Kokkos<%s, Kokkos::Serial>"),
+        ("read-modify-write bandwidth (6 arrays), 1 thread", "BM_Bandwidth<%s>"),
+        ("`pointmass::step(par_unseq, ...)` (TBB), 2 threads", "BM_SystemParallel<%s>"),
+        ("Kokkos OpenMP, `KokkosSystem::step`, 2 threads", "BM_Kokkos<%s, Kokkos::OpenMP>"),
+        ("read-modify-write bandwidth (6 arrays), 2 threads", "BM_BandwidthParallel<%s>")]
+print("| loop | float | double |\n|---|---|---|")
+for label, name in rows:
+    cells = [f"{rate[key(name, r)]:,.0f}" if key(name, r) in rate else
+             "not measured: this Kokkos has no OpenMP backend" for r in ("float", "double")]
+    print(f"| {label} | " + " | ".join(cells) + " |")
+def ratio(a, b, real):
+    ka, kb = key(a, real), key(b, real)
+    return f"{rate[ka] / rate[kb]:.2f}" if ka in rate and kb in rate else "not measured"
+print("\n| ratio | float | double | target |\n|---|---|---|---|")
+for label, a, b, target in [
+        ("Kokkos Serial / `step`", "BM_Kokkos<%s, Kokkos::Serial>", "BM_SystemStep<%s>", ""),
+        ("Kokkos Serial / one-thread bound", "BM_Kokkos<%s, Kokkos::Serial>", "BM_Bandwidth<%s>", ">= 0.9"),
+        ("`par_unseq` / two-thread bound", "BM_SystemParallel<%s>", "BM_BandwidthParallel<%s>", ">= 0.9"),
+        ("Kokkos OpenMP / two-thread bound", "BM_Kokkos<%s, Kokkos::OpenMP>", "BM_BandwidthParallel<%s>", ">= 0.9"),
+        ("Kokkos OpenMP / `par_unseq`", "BM_Kokkos<%s, Kokkos::OpenMP>", "BM_SystemParallel<%s>", "")]:
+    print(f"| {label} | {ratio(a, b, 'float')} | {ratio(a, b, 'double')} | {target} |")
+PY
+cat "$tables"
+replace_between_markers "$POINTMASS_ROOT/docs/performance.md" kokkos "$tables"
+echo "updated docs/performance.md"
