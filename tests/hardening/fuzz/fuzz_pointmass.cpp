@@ -847,7 +847,8 @@ void fuzz_system(Input& in) {
         require(copy.capacity() == system.capacity(), "a copy has another capacity");
         require(!copy.next_step_backward(), "a copy does not start walking forwards");
         compare(copy, mirror, budget);
-        switch (in.byte() % 3) {
+        const int assigned_to = in.byte() % 3;
+        switch (assigned_to) {
           case 0: system = copy; break;
           case 1: {
             const System& alias = system;
@@ -860,6 +861,8 @@ void fuzz_system(Input& in) {
             break;
         }
         require(system.capacity() == copy.capacity(), "copy assignment changed the capacity");
+        require(!(assigned_to == 2 ? other : system).next_step_backward(),
+                "a copy-assigned system does not start walking forwards");
         compare(copy, mirror, budget);  // the source of the copies is unchanged
         break;
       }
@@ -878,7 +881,8 @@ void fuzz_system(Input& in) {
         require(identical(system.position(0), Vector3<R>{R(1), R(2), R(3)}),
                 "a moved-from system lost a new particle");
         system = std::move(moved);
-        require(system.capacity() == capacity, "a move assignment lost the capacity");
+        require(system.capacity() == capacity && system.next_step_backward() == backward,
+                "a move assignment lost the capacity or the walk's direction");
         break;
       }
       case 17: {  // swap with the other system
