@@ -2,6 +2,7 @@
 // print the violation (function, argument, value, requirement) to stderr and abort. The
 // program breaks the contract named by its argument; contract_abort.cmake runs it and checks
 // that it died by abort with the documented message, and did not get past the bad call.
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 #include <limits>
@@ -28,8 +29,11 @@ int main(int argc, char** argv) {
   } else if (std::strcmp(which, "kill") == 0) {
     ParticleSystem<double> system(4);
     system.kill(7);
+  } else if (std::strcmp(which, "reserve") == 0) {  // where std::length_error would be thrown
+    ParticleSystem<float> system(4);
+    system.reserve(std::numeric_limits<std::size_t>::max());
   } else {
-    std::fprintf(stderr, "usage: %s set_mass|integrate|add_force|kill\n", argv[0]);
+    std::fprintf(stderr, "usage: %s set_mass|integrate|add_force|kill|reserve\n", argv[0]);
     return 2;
   }
   std::puts("survived the violation");  // reached only if the handler returned

@@ -51,7 +51,7 @@ constexpr bool check_damping(const char* function, R damping) {
 /// mass() == 1 / inverse_mass() stays finite for every finite mass accepted.
 template <Real R>
 constexpr bool check_mass(const char* function, R mass) {
-  if (!real_isnan(mass) && mass > R(0)) {  // only then is 1 / mass computed
+  if (!real_isnan(mass) && mass > R(0)) {  // only then divide: 1 / 0 is a division by zero
     const R inverse = R(1) / mass;
     if (real_equal(inverse, R(0)) ||
         (real_isfinite(inverse) && inverse >= std::numeric_limits<R>::min())) {

@@ -1,5 +1,7 @@
-// Fuzz target: drives Particle (every damping x position pair) and ParticleSystem (six
-// feature sets), float and double, through the public API with arbitrary bytes.
+// Fuzz target: drives Particle (every damping x position pair), ParticleSystem (ten feature
+// sets and policy pairs: operation sequences checked against a reference model, see
+// "ParticleSystem" below) and the force generators, float and double, through the public
+// API with arbitrary bytes.
 //
 // The first byte chooses the configuration; the rest is a program of operations (setters,
 // forces, steps, spawns, kills...) whose arguments are read from the input as raw bit
@@ -19,9 +21,10 @@
 //     position or velocity is the library's fault. Outside the bounds an overflow to
 //     infinity is the input's doing, and only the contracts (and the sanitizers) are checked.
 //   * A ParticleSystem agrees with the same operations on scalar Particles (a mirror), bit
-//     for bit (zeros compared by value: the scalar path adds a zero force to the acceleration,
-//     which turns a -0 component into +0), through step() and through the step_particle path
-//     a GPU loop would run.
+//     for bit, through step(), the step_particle path a GPU loop would run and step_range /
+//     step_range_backward over any ranges (zeros are compared by value only once a system
+//     without ForceAccumulator was given a -0 acceleration component: the scalar path adds a
+//     zero force to the acceleration, which turns it into +0).
 //
 // Inputs starting with a byte >= 0xF0 drive the force generators instead (see "force
 // generators" below).
@@ -38,12 +41,14 @@
 #include <span>
 
 #include <charconv>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <type_traits>
@@ -246,6 +251,17 @@ bool finite(const Vector3<R>& v) {
   return is_finite(v);
 }
 
+template <class R>
+bool mass_accepted(R m) {  // detail::check_mass's rule, written out
+  if (!(m > R(0))) return false;
+  const R inverse = R(1) / m;
+  return inverse == R(0) || (real_isfinite(inverse) && inverse >= std::numeric_limits<R>::min());
+}
+template <class R>
+bool inverse_mass_accepted(R im) {
+  return im == R(0) || (real_isfinite(im) && im >= std::numeric_limits<R>::min());
+}
+
 // --- Particle -------------------------------------------------------------------------------
 
 template <class Particle>
@@ -292,10 +308,8 @@ void fuzz_particle(Input& in) {
       case 3: {
         const R m = in.number<R>();
         body.set_mass(m);
-        // Documented: mass > 0, not NaN, 1/mass finite and not subnormal (infinity:
-        // immovable).
-        rejected = m != m || !(m > R(0)) || !real_isfinite(R(1) / m) ||
-                   (R(1) / m > R(0) && R(1) / m < std::numeric_limits<R>::min());
+        // Documented: mass > 0, not NaN, 1/mass finite and normal (infinity: immovable).
+        rejected = !mass_accepted(m);
         if (rejected) {
           expect_rejected("set_mass", "mass", m);
         } else {
@@ -307,9 +321,7 @@ void fuzz_particle(Input& in) {
       case 4: {
         const R im = in.number<R>();
         body.set_inverse_mass(im);
-        // Documented: 0 (immovable), or finite, normal and > 0.
-        rejected = !real_isfinite(im) || im < R(0) ||
-                   (im > R(0) && im < std::numeric_limits<R>::min());
+        rejected = !inverse_mass_accepted(im);  // 0, or finite, normal and > 0
         if (rejected) expect_rejected("set_inverse_mass", "inverse_mass", im);
         else require(identical(body.inverse_mass(), im), "set_inverse_mass did not take effect");
         if (!rejected) budget.value(im, inverse_mass_bound);
@@ -356,7 +368,7 @@ void fuzz_particle(Input& in) {
                         identical(body.velocity(), start.velocity()),
                     "an immovable particle moved");
           }
-          if (t == R(0)) {  // documented: a zero step changes nothing, movable or not
+          if (t == R(0)) {  // docs/numerics.md, "A zero step": immovable or not
             require(same_state(body, start), "a zero step changed the particle");
           } else {
             require(identical(body.force_accumulator(), Vector3<R>{}), "accumulator not cleared");
@@ -381,6 +393,32 @@ void fuzz_particle(Input& in) {
 }
 
 // --- ParticleSystem, against a mirror of scalar Particles ------------------------------------
+//
+// Operation sequences on a system, each checked against a reference model (the mirror): a
+// std::vector of the equivalent Particles, killed by the documented swap-remove, aged and
+// expired by the documented rule (age >= lifetime, and an infinite lifetime never expires).
+// After every operation the system agrees with the mirror bit for bit: positions,
+// velocities, accelerations, inverse masses, forces, damping, ages, lifetimes. The one
+// documented exception (docs/numerics.md, "Determinism"): a Particle adds its zero force to
+// its acceleration, turning a -0 acceleration component into +0, so once an input gives a
+// configuration without ForceAccumulator a -0 acceleration, zeros are compared by value.
+//
+// The operations: spawn (a position and velocity, or copies of particles), kill, kill_if,
+// every setter with any value and any index (huge ones too), every accessor with any index
+// (an index >= size() is reported and changes nothing), step, the step_particle loop a
+// device runs, step_range and step_range_backward over any [begin, end) (a range outside
+// [0, size()] or reversed is reported and changes nothing), reserve with any count, copy,
+// copy assignment, move, move assignment and swap with a second system.
+//
+// reserve with a count beyond max_size() throws std::length_error: checked where the target
+// has exceptions (the libFuzzer build). The replay driver is built without exceptions, where
+// the refusal reports and aborts (hardening.no-exceptions.aborts.reserve checks that), so
+// there those counts are skipped. Counts between reserve_limit and max_size() would really
+// allocate that much and are skipped everywhere (tests/test_system_contracts.cpp has the
+// exception's message and the "changes nothing" of the refusal for the edge counts).
+
+constexpr std::size_t max_particles = 1400;  // enough for step to alternate its walk
+constexpr std::size_t reserve_limit = 4096;
 
 template <class System>
 class Mirror {
@@ -393,18 +431,24 @@ class Mirror {
   std::vector<R> lifetimes;
   Vector3<R> acceleration{};
   R damping = R(1);
+  bool zero_signs_may_differ = false;  // a -0 acceleration without ForceAccumulator
 
+  std::size_t size() const { return bodies.size(); }
+
+  void push(const Body& body) {
+    bodies.push_back(body);
+    ages.push_back(R(0));
+    lifetimes.push_back(std::numeric_limits<R>::infinity());
+  }
   void spawn(const Vector3<R>& p, const Vector3<R>& v) {
     Body body;
     body.set_position(p);
     body.set_velocity(v);
     if constexpr (!System::per_particle_acceleration) body.set_acceleration(acceleration);
     if constexpr (System::stores_damping && !System::per_particle_damping) body.set_damping(damping);
-    bodies.push_back(body);
-    ages.push_back(R(0));
-    lifetimes.push_back(std::numeric_limits<R>::infinity());
+    push(body);
   }
-  void kill(std::size_t i) {
+  void kill(std::size_t i) {  // swap-remove
     bodies[i] = bodies.back();
     ages[i] = ages.back();
     lifetimes[i] = lifetimes.back();
@@ -412,29 +456,65 @@ class Mirror {
     ages.pop_back();
     lifetimes.pop_back();
   }
-  void step(R t) {
-    if (t == R(0) || bodies.empty()) return;
-    for (auto& body : bodies) body.integrate(t);
+  void note_acceleration(const Vector3<R>& a) {
+    if constexpr (!System::has_forces) {
+      const auto negative_zero = [](R x) { return x == R(0) && std::signbit(x); };
+      if (negative_zero(a.x) || negative_zero(a.y) || negative_zero(a.z)) zero_signs_may_differ = true;
+    }
+  }
+  void integrate(std::size_t i, R t) {
+    bodies[i].integrate(t);
+    ages[i] += t;
+  }
+  static bool expired(R age, R lifetime) {
+    return age >= lifetime && lifetime != std::numeric_limits<R>::infinity();
+  }
+  void expire() {
     if constexpr (System::has_lifetime) {
-      for (auto& age : ages) age += t;
       std::size_t i = 0;
       while (i < bodies.size()) {
-        if (!(ages[i] < lifetimes[i])) kill(i);
+        if (expired(ages[i], lifetimes[i])) kill(i);
         else ++i;
       }
     }
   }
+  void step(R t) {  // ParticleSystem::step's documented effect
+    if (t == R(0) || bodies.empty()) return;
+    for (std::size_t i = 0; i < bodies.size(); ++i) integrate(i, t);
+    expire();
+  }
 };
 
 template <class System>
+std::size_t immortals(const System& system) {  // particles whose lifetime is infinite
+  std::size_t count = 0;
+  if constexpr (System::has_lifetime) {
+    for (std::size_t i = 0; i < system.size(); ++i) {
+      count += system.lifetime(i) == std::numeric_limits<typename System::real>::infinity();
+    }
+  }
+  return count;
+}
+
+template <class System>
 void compare(const System& system, const Mirror<System>& mirror, const Budget& budget) {
-  require(system.size() == mirror.bodies.size(), "system and mirror differ in size");
+  require(system.size() == mirror.size(), "system and mirror differ in size");
+  require(system.arrays().size == system.size(), "arrays().size differs from size()");
+  require(system.capacity() >= system.size(), "capacity below size");
+  require(system.position_x().size() == system.size() && system.velocity_z().size() == system.size(),
+          "a span's size differs from size()");
+  const bool exact = !mirror.zero_signs_may_differ;
+  const auto agree = [exact](const auto& a, const auto& b) { return exact ? identical(a, b) : same(a, b); };
   for (std::size_t i = 0; i < system.size(); ++i) {
     const auto& body = mirror.bodies[i];
-    require(same(system.position(i), body.position()), "system position differs from Particle");
-    require(same(system.velocity(i), body.velocity()), "system velocity differs from Particle");
+    const Vector3<typename System::real> p = system.position(i);
+    require(agree(p, body.position()), "system position differs from Particle");
+    require(agree(system.velocity(i), body.velocity()), "system velocity differs from Particle");
+    require(identical(system.position_x()[i], p.x) && identical(system.velocity_y()[i], system.velocity(i).y),
+            "a span differs from the accessor");
+    require(identical(system.acceleration(i), body.acceleration()), "acceleration differs");
     if constexpr (System::has_forces) {
-      require(same(system.force_accumulator(i), body.force_accumulator()), "force differs");
+      require(identical(system.force_accumulator(i), body.force_accumulator()), "force differs");
       require(identical(system.inverse_mass(i), body.inverse_mass()), "inverse mass differs");
     }
     if constexpr (System::has_lifetime) {
@@ -447,6 +527,77 @@ void compare(const System& system, const Mirror<System>& mirror, const Budget& b
               "finite physics gave a non-finite system particle");
     }
   }
+  expect_accepted("an accessor with a valid index");
+}
+
+/// An index: mostly a live one, sometimes just past the end, sometimes huge.
+std::size_t pick_index(Input& in, std::size_t size) {
+  std::size_t index = in.byte();
+  if (index >= 248) {
+    constexpr std::size_t max = std::numeric_limits<std::size_t>::max();
+    const std::size_t special[] = {size, size + 1, max, max - 1, max / 2 + 1,
+                                   std::size_t{1} << 32, size + 64, 255};
+    index = special[index - 248];
+  } else if (index < 200 && size != 0) {
+    index %= size;
+  }
+  return index;
+}
+
+/// A bound of a range: mostly within [0, size], sometimes beyond.
+std::size_t pick_bound(Input& in, std::size_t size) {
+  const std::uint8_t b = in.byte();
+  if (b < 224) return b % (size + 1);
+  constexpr std::size_t max = std::numeric_limits<std::size_t>::max();
+  const std::size_t special[] = {size + 1, size + 16, size + 257, max, max - 1, max / 2, 0, size};
+  return special[b % 8];
+}
+
+/// A count for reserve: small, moderate, huge (at and around max_size()), or any 64 bits.
+template <class System>
+std::size_t pick_count(Input& in) {
+  constexpr std::size_t max = std::numeric_limits<std::size_t>::max();
+  switch (in.byte() % 4) {
+    case 0: return in.byte();
+    case 1: return in.word() % (reserve_limit + 1);
+    case 2: {
+      const std::size_t special[] = {System::max_size() + 1,
+                                     System::max_size() + 2,
+                                     max,
+                                     max - 1,
+                                     max / 2,
+                                     max / System::storage_bytes_per_particle + 1,
+                                     max / System::array_count + 1,
+                                     max - 4095,
+                                     2 * System::max_size(),
+                                     (max >> 1) + 1};
+      return special[in.byte() % (sizeof special / sizeof special[0])];
+    }
+    default: {
+      std::size_t count = 0;
+      for (int k = 0; k < 8; ++k) count |= static_cast<std::size_t>(in.byte()) << (8 * k);
+      return count;
+    }
+  }
+}
+
+/// A decision about a particle that depends on its state only (zeros and NaNs canonical, so
+/// the system and the mirror decide alike), for kill_if.
+template <class R>
+bool doomed(const Vector3<R>& p, const Vector3<R>& v, std::uint8_t mode) {
+  if (mode % 8 == 7) return true;
+  std::uint64_t hash = 1469598103934665603u ^ mode;
+  for (R x : {p.x, p.y, p.z, v.x, v.y, v.z}) {
+    if (x == R(0)) x = R(0);
+    if (x != x) x = std::numeric_limits<R>::quiet_NaN();
+    std::conditional_t<sizeof(R) == 4, std::uint32_t, std::uint64_t> bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    hash = (hash ^ bits) * 1099511628211u;
+  }
+  hash ^= hash >> 31;  // mixed, so that every bit depends on the whole state
+  hash *= 0xbf58476d1ce4e5b9u;
+  hash ^= hash >> 29;
+  return (hash >> 32) % 4 < mode % 4;  // mode 0: none, 3: about three in four
 }
 
 template <class System>
@@ -454,18 +605,21 @@ void fuzz_system(Input& in) {
   using R = typename System::real;
   System system(in.byte() % 40);
   Mirror<System> mirror;
+  System other;  // the other side of swaps
+  Mirror<System> other_mirror;
   Budget budget;
   for (int op = 0; op < 200 && !in.empty(); ++op) {
     const std::uint8_t code = in.byte();
-    std::size_t index = in.byte();
-    if (index < 200 && system.size() != 0) index %= system.size();  // mostly valid indices
+    const std::size_t index = pick_index(in, system.size());
     const bool valid_index = index < system.size();
-    switch (code % 13) {
+    const std::size_t immortal = immortals(system);
+    bool stepped = false;  // the operation stepped: no particle with an infinite lifetime may go
+    switch (code % 23) {
       case 0:
       case 1: {
         const auto p = in.vector<R>();
         const auto v = in.vector<R>();
-        if (system.size() >= 64) break;
+        if (system.size() >= max_particles) break;
         const std::size_t i = system.spawn(p, v);
         if (!finite(p)) {
           expect_rejected("spawn", "position", p);
@@ -475,7 +629,7 @@ void fuzz_system(Input& in) {
           require(i == System::npos, "rejected spawn returned an index");
         } else {
           expect_accepted("spawn");
-          require(i == mirror.bodies.size(), "spawn index");
+          require(i == mirror.size(), "spawn index");
           mirror.spawn(p, v);
           budget.vector(p);
           budget.vector(v);
@@ -508,9 +662,15 @@ void fuzz_system(Input& in) {
         const auto a = in.vector<R>();
         if constexpr (System::per_particle_acceleration) {
           system.set_acceleration(index, a);
-          if (!valid_index) expect_rejected("set_acceleration", "index", index);
-          else if (!finite(a)) expect_rejected("set_acceleration", "acceleration", a);
-          else mirror.bodies[index].set_acceleration(a), budget.vector(a);
+          if (!valid_index) {
+            expect_rejected("set_acceleration", "index", index);
+          } else if (!finite(a)) {
+            expect_rejected("set_acceleration", "acceleration", a);
+          } else {
+            mirror.bodies[index].set_acceleration(a);
+            mirror.note_acceleration(a);
+            budget.vector(a);
+          }
         } else {
           system.set_acceleration(a);
           if (!finite(a)) {
@@ -518,6 +678,7 @@ void fuzz_system(Input& in) {
           } else {
             mirror.acceleration = a;
             for (auto& body : mirror.bodies) body.set_acceleration(a);
+            mirror.note_acceleration(a);
             budget.vector(a);
           }
         }
@@ -550,10 +711,11 @@ void fuzz_system(Input& in) {
           system.set_mass(index, m);
           if (!valid_index) {
             expect_rejected("set_mass", "index", index);
-          } else if (m != m || !(m > R(0)) || !real_isfinite(R(1) / m)) {
+          } else if (!mass_accepted(m)) {
             expect_rejected("set_mass", "mass", m);
           } else {
             mirror.bodies[index].set_mass(m);
+            require(identical(system.inverse_mass(index), R(1) / m), "set_mass did not take effect");
             budget.value(R(1) / m, inverse_mass_bound);
           }
         }
@@ -589,15 +751,16 @@ void fuzz_system(Input& in) {
       case 10: {  // the step_particle path, as a GPU loop runs it
         const R t = in.number<R>();
         if (!real_isfinite(t) || t < R(0)) break;
-        if (system.size() != 0 && t != R(0)) {
+        if (system.begin_step(t)) {
           const auto parameters = system.step_parameters(t);
-          for (std::size_t i = 0; i < system.size(); ++i) {
+          for (std::size_t i = 0; i < system.arrays().size; ++i) {
             System::step_particle(system.arrays(), i, parameters);
           }
           system.finish_step();
         }
         mirror.step(t);
         budget.step(1, static_cast<double>(t));
+        stepped = true;
         break;
       }
       case 11: {  // a copy steps as the original does
@@ -608,13 +771,17 @@ void fuzz_system(Input& in) {
         system.step(t);
         require(copy.size() == system.size(), "copy stepped to another size");
         for (std::size_t i = 0; i < system.size(); ++i) {
-          require(identical(copy.position(i), system.position(i)), "copy stepped differently");
+          require(identical(copy.position(i), system.position(i)) &&
+                      identical(copy.velocity(i), system.velocity(i)),
+                  "copy stepped differently");
         }
         mirror.step(t);
         budget.step(1, static_cast<double>(t));
+        stepped = true;
         break;
       }
-      default: {
+      case 12:
+      case 22: {
         const R t = in.number<R>();
         const int count = in.byte() % 9;
         for (int k = 0; k < (count == 0 ? 1 : count); ++k) {
@@ -626,12 +793,217 @@ void fuzz_system(Input& in) {
           mirror.step(t);
         }
         if (real_isfinite(t) && t >= R(0)) budget.step(count == 0 ? 1 : count, static_cast<double>(t));
+        stepped = true;
         break;
       }
+      case 13: {  // reserve with any count
+        const std::size_t count = pick_count<System>(in);
+        const std::size_t capacity = system.capacity();
+        if (count <= reserve_limit) {
+          system.reserve(count);
+          require(system.capacity() >= count, "reserve left too little room");
+          if (count <= capacity) require(system.capacity() == capacity, "a reserve within capacity changed it");
+        } else if (count > System::max_size()) {
+#if POINTMASS_HAS_EXCEPTIONS
+          std::string message;
+          try {
+            system.reserve(count);
+          } catch (const std::length_error& error) {
+            message = error.what();
+          }
+          require(!message.empty(), "reserve beyond max_size() did not throw std::length_error");
+          require(message.find("reserve") != std::string::npos &&
+                      message.find("'capacity' = " + std::to_string(count)) != std::string::npos,
+                  "reserve's length_error does not name the call and count:", message.c_str());
+          require(system.capacity() == capacity, "a refused reserve changed the capacity");
+#endif
+        }
+        break;
+      }
+      case 14: {  // kill_if: the particles whose state is doomed, in swap-remove order
+        const std::uint8_t mode = in.byte();
+        const std::size_t before = system.size();
+        std::size_t asked = 0;
+        const std::size_t removed = system.kill_if([&](std::size_t i) {
+          ++asked;
+          require(i < system.size(), "kill_if asked about a dead index");
+          return doomed(system.position(i), system.velocity(i), mode);
+        });
+        std::size_t mirror_removed = 0;
+        for (std::size_t i = 0; i < mirror.size();) {
+          if (doomed(mirror.bodies[i].position(), mirror.bodies[i].velocity(), mode)) {
+            mirror.kill(i);
+            ++mirror_removed;
+          } else {
+            ++i;
+          }
+        }
+        require(asked == before, "kill_if did not ask about each particle once");
+        require(removed == mirror_removed, "kill_if returned a wrong count");
+        break;
+      }
+      case 15: {  // copy construction and copy assignment
+        const System copy = system;
+        require(copy.capacity() == system.capacity(), "a copy has another capacity");
+        require(!copy.next_step_backward(), "a copy does not start walking forwards");
+        compare(copy, mirror, budget);
+        const int assigned_to = in.byte() % 3;
+        switch (assigned_to) {
+          case 0: system = copy; break;
+          case 1: {
+            const System& alias = system;
+            system = alias;  // self-assignment
+            break;
+          }
+          default:
+            other = copy;
+            other_mirror = mirror;
+            break;
+        }
+        require(system.capacity() == copy.capacity(), "copy assignment changed the capacity");
+        require(!(assigned_to == 2 ? other : system).next_step_backward(),
+                "a copy-assigned system does not start walking forwards");
+        compare(copy, mirror, budget);  // the source of the copies is unchanged
+        break;
+      }
+      case 16: {  // move construction and move assignment
+        const std::size_t capacity = system.capacity();
+        const bool backward = system.next_step_backward();
+        System moved(std::move(system));
+        require(moved.capacity() == capacity && moved.next_step_backward() == backward,
+                "a move lost the capacity or the walk's direction");
+        compare(moved, mirror, budget);
+        // The moved-from system can be cleared, used and assigned to.
+        system.clear();
+        require(system.size() == 0, "clear left particles");
+        require(system.spawn(Vector3<R>{R(1), R(2), R(3)}, Vector3<R>{}) == 0,
+                "a moved-from system does not spawn at 0");
+        require(identical(system.position(0), Vector3<R>{R(1), R(2), R(3)}),
+                "a moved-from system lost a new particle");
+        system = std::move(moved);
+        require(system.capacity() == capacity && system.next_step_backward() == backward,
+                "a move assignment lost the capacity or the walk's direction");
+        break;
+      }
+      case 17: {  // swap with the other system
+        const std::size_t capacities[] = {system.capacity(), other.capacity()};
+        const bool directions[] = {system.next_step_backward(), other.next_step_backward()};
+        switch (in.byte() % 3) {
+          case 0: system.swap(other); break;
+          case 1: swap(system, other); break;
+          default: std::swap(system, other); break;
+        }
+        std::swap(mirror, other_mirror);
+        require(system.capacity() == capacities[1] && other.capacity() == capacities[0],
+                "swap did not exchange the capacities");
+        require(system.next_step_backward() == directions[1] &&
+                    other.next_step_backward() == directions[0],
+                "swap did not exchange the walk's direction");
+        compare(other, other_mirror, budget);
+        break;
+      }
+      case 18: {  // every accessor with any index: a bad one is reported, nothing changes
+        const auto read = [&](const char* function, auto value) {
+          static_cast<void>(value);
+          if (valid_index) expect_accepted(function);
+          else expect_rejected(function, "index", index);
+        };
+        read("position", system.position(index));
+        read("velocity", system.velocity(index));
+        read("acceleration", system.acceleration(index));
+        read("damping", system.damping(index));
+        if constexpr (System::has_forces) {
+          read("inverse_mass", system.inverse_mass(index));
+          read("force_accumulator", system.force_accumulator(index));
+        }
+        if constexpr (System::has_lifetime) {
+          read("age", system.age(index));
+          read("lifetime", system.lifetime(index));
+        }
+        break;
+      }
+      case 19: {  // step_range and step_range_backward over any ranges, then finish_step
+        const R t = in.number<R>();
+        const int pieces = in.byte() % 6 + 1;
+        const bool work = system.begin_step(t);
+        if (!real_isfinite(t) || t < R(0)) {
+          expect_rejected("step", "duration", t);
+          break;
+        }
+        if (!work) break;
+        const auto parameters = system.step_parameters(t);
+        for (int k = 0; k < pieces; ++k) {
+          const std::size_t begin = pick_bound(in, system.size());
+          const std::size_t end = pick_bound(in, system.size());
+          const bool backward = in.byte() % 2 == 1;
+          const char* function = backward ? "step_range_backward" : "step_range";
+          (backward ? System::step_range_backward : System::step_range)(system.arrays(), begin,
+                                                                         end, parameters);
+          if (end > system.size()) {
+            expect_rejected(function, "end", end);
+          } else if (begin > end) {
+            expect_rejected(function, "begin", begin);
+          } else {
+            for (std::size_t i = begin; i < end; ++i) mirror.integrate(i, t);
+            budget.step(1, static_cast<double>(t));
+          }
+          compare(system, mirror, budget);
+        }
+        system.finish_step();
+        mirror.expire();
+        stepped = true;
+        break;
+      }
+      case 20: {
+        if constexpr (System::has_forces) {
+          const R im = in.number<R>();
+          system.set_inverse_mass(index, im);
+          if (!valid_index) {
+            expect_rejected("set_inverse_mass", "index", index);
+          } else if (!inverse_mass_accepted(im)) {
+            expect_rejected("set_inverse_mass", "inverse_mass", im);
+          } else {
+            mirror.bodies[index].set_inverse_mass(im);
+            budget.value(im, inverse_mass_bound);
+          }
+        }
+        break;
+      }
+      case 21: {  // spawn copies of particles, moved apart (spawn(const particle_type&)): grows
+        const std::size_t count = std::size_t{in.byte()} * 6;
+        if (mirror.size() == 0) break;
+        for (std::size_t k = 0; k < count && system.size() < max_particles; ++k) {
+          auto body = mirror.bodies[(index + k) % mirror.size()];
+          const Vector3<R> p = body.position();
+          const Vector3<R> shifted{p.x + static_cast<R>(k), p.y, p.z};  // copies that differ
+          if (finite(shifted)) {
+            body.set_position(shifted);
+            budget.vector(shifted);
+          }
+          const std::size_t i = system.spawn(body);
+          if (!finite(body.position())) {  // a particle stepped beyond the range of R
+            expect_rejected("spawn", "position", body.position());
+            require(i == System::npos, "rejected spawn returned an index");
+          } else if (!finite(body.velocity())) {
+            expect_rejected("spawn", "velocity", body.velocity());
+            require(i == System::npos, "rejected spawn returned an index");
+          } else {
+            require(i == mirror.size(), "spawn(particle) index");
+            mirror.push(body);
+          }
+        }
+        break;
+      }
+      default:
+        break;
     }
     expect_accepted("system operation");
+    if (stepped) {
+      require(immortals(system) == immortal, "a particle with an infinite lifetime expired");
+    }
     compare(system, mirror, budget);
   }
+  compare(other, other_mirror, budget);
 }
 
 // --- force generators -----------------------------------------------------------------------
@@ -964,11 +1336,27 @@ using SystemConfigs = std::tuple<
     SystemConfig<ParticleSystem<R, damping::PerSecond, position::SemiImplicit, features::ForceAccumulator,
                                  features::Lifetime>>>;
 
+// More feature sets and policy pairs, after the others so that the first byte of the
+// corpus's older inputs still chooses the configuration it chose.
+template <class R>
+using MoreSystemConfigs = std::tuple<
+    SystemConfig<ParticleSystem<R, damping::PerFrame, position::Euler, features::PerParticleDamping,
+                                 features::ForceAccumulator>>,
+    SystemConfig<ParticleSystem<R, damping::Exact, position::SemiImplicit,
+                                 features::PerParticleAcceleration, features::Lifetime>>,
+    SystemConfig<ParticleSystem<R, damping::PerSecond, position::Kinematic, features::Lifetime,
+                                 features::PerParticleDamping, features::PerParticleAcceleration>>,
+    SystemConfig<ParticleSystem<R, damping::None, position::Euler, features::ForceAccumulator,
+                                 features::Lifetime>>>;
+
 template <class... A, class... B>
 auto concatenate(std::tuple<A...>, std::tuple<B...>) -> std::tuple<A..., B...>;
 using Configs = decltype(concatenate(
-    concatenate(std::declval<ParticleConfigs<float>>(), std::declval<ParticleConfigs<double>>()),
-    concatenate(std::declval<SystemConfigs<float>>(), std::declval<SystemConfigs<double>>())));
+    concatenate(
+        concatenate(std::declval<ParticleConfigs<float>>(), std::declval<ParticleConfigs<double>>()),
+        concatenate(std::declval<SystemConfigs<float>>(), std::declval<SystemConfigs<double>>())),
+    concatenate(std::declval<MoreSystemConfigs<float>>(), std::declval<MoreSystemConfigs<double>>())));
+static_assert(std::tuple_size_v<Configs> < 0xF0, "the first bytes from 0xF0 choose the forces");
 
 template <std::size_t... I>
 void dispatch(std::size_t which, Input& in, std::index_sequence<I...>) {
