@@ -16,6 +16,10 @@
 // throws std::invalid_argument where exceptions are enabled; with -fno-exceptions it prints
 // the message to stderr and aborts. `set_contract_handler` installs another. If a handler
 // returns, the call that failed its check returns without changing anything.
+//
+// Owns: the version, POINTMASS_HD, the checks settings (POINTMASS_CHECKS, POINTMASS_HOST_CHECKS),
+// the inline namespace keyed by them, and the contract handler.
+// Must not include: any other pointmass header (every header includes this one).
 #pragma once
 
 #include <atomic>

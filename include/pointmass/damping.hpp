@@ -37,6 +37,9 @@
 //   static V velocity(v0, a, t, Factors)
 // and satisfies the DampingPolicy concept. velocity() is written over generic arithmetic, so
 // it applies to Vector3s, to one component at a time, and to dimensioned quantities alike.
+//
+// Owns: the damping policies, their order and exactness traits, the DampingPolicy concept.
+// Must not include: position.hpp, particle.hpp or anything above them.
 #pragma once
 
 #include <concepts>

@@ -5,6 +5,9 @@
 // acceleration (0, -g, 0), positive Y up, and g is tunable per particle. The text's values:
 // 9.807 m/s^2 (the scientific mean), and what games use for a livelier feel: 15 (shooters)
 // and 20 (driving games).
+//
+// Owns: gravity(g) and the text's values of g.
+// Must not include: anything but config.hpp, real.hpp and vector3.hpp.
 #pragma once
 
 #include "config.hpp"

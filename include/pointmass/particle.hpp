@@ -25,6 +25,9 @@
 // Precision<float, Compensated<float>>), p1 is p0 + d with the displacement
 // d = P::position(0, v0, v1, a, t, f) computed in the arithmetic's precision and added in the
 // position's (precision.hpp); the velocity is the same, bit for bit, as with plain floats.
+//
+// Owns: advance<D, P> (one step of one body) and BasicParticle / Particle.
+// Must not include: particle_system.hpp, forces.hpp, units.hpp (they build on it).
 #pragma once
 
 #include <type_traits>

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 // pointmass/pointmass.hpp — the umbrella header: the whole library but the Boost.Units face,
 // standard library only. (Boost.Units support is apart, in <pointmass/units.hpp>.)
+//
+// Owns: nothing but the list of core headers.
+// Must not include: units.hpp (Boost), parallel.hpp (<execution>), kokkos.hpp, extras/.
 #pragma once
 
 #include "config.hpp"

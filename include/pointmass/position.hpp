@@ -23,6 +23,10 @@
 //                                  const auto& a, const auto& t, const auto& factors);
 // Written over generic arithmetic, it applies to Vector3s, to single components and to
 // dimensioned quantities alike.
+//
+// Owns: the position policies, their traits, the pair traits (order_v,
+// is_exact_for_constant_acceleration_v), PositionPolicyFor and the one-sentence pair check.
+// Must not include: particle.hpp or anything above it.
 #pragma once
 
 #include <concepts>

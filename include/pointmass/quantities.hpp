@@ -11,6 +11,9 @@
 // A set may also name the precision of the stored position (precision.hpp):
 // `position_precision` (a Real or Compensated<R>) and `position`, the type a position is read
 // and set as. Without them the position is a `length`, stored as `real`.
+//
+// Owns: the QuantitySet concept and PlainQuantities (the types of length, velocity, ...).
+// Must not include: damping.hpp, position.hpp, particle.hpp (it is below them).
 #pragma once
 
 #include <concepts>

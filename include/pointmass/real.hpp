@@ -9,6 +9,10 @@
 //
 // `scalar_t<T>` is the Real a (possibly dimensioned) type is made of: `float` for float,
 // `Y` for a Boost.Units `quantity<Unit, Y>` (specialised in units.hpp).
+//
+// Owns: the Real concept, the maths functions matched to each precision, NaN and infinity by
+// bit pattern, real_equal.
+// Must not include: anything but config.hpp.
 #pragma once
 
 #include <cmath>

@@ -45,6 +45,9 @@
 // position, read and set as a units::length of position_value_t (double for
 // Precision<float, double> and Precision<float, Compensated<float>>); the step's
 // displacement is still a length<R>, checked for dimensions as above.
+//
+// Owns: the Boost.Units face (SiQuantities, units::Particle); the one header that needs Boost.
+// Must not include: particle_system.hpp or forces.hpp (the face is the particle's).
 #pragma once
 
 #include <type_traits>

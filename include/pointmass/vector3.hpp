@@ -15,6 +15,10 @@
 // Elsewhere they compute exactly what the plain formula computes, bit for bit. A magnitude
 // above the largest finite value (only possible beyond about 0.58 of it per component) is
 // infinity; a direction is always a unit vector.
+//
+// Owns: Vector3<T>, its arithmetic, magnitude and normalized (scaled, no overflow), and the
+// conversion to and from the user's vector types (VectorTraits).
+// Must not include: anything but config.hpp and real.hpp.
 #pragma once
 
 #include <limits>
