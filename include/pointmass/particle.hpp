@@ -347,8 +347,9 @@ class BasicParticle {
 /// a Real, or a Precision<Real, Position> (precision.hpp) for positions stored wider than
 /// the arithmetic (Precision<R> computes and stores as R does). R is used as it is, so that
 /// generic code can deduce it from a Particle<R>.
+/// (R is checked by PlainQuantities; a constraint on this alias itself made g++ 12 fail
+/// nondeterministically.)
 template <class R, DampingPolicy D = damping::PerSecond, class P = position::Euler>
-  requires Real<R> || PrecisionChoice<R>
 using Particle = BasicParticle<PlainQuantities<R>, D, P>;
 
 }  // namespace pointmass

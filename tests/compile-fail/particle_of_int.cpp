@@ -1,6 +1,6 @@
-// A Real that is not float, double or long double.
-// expected-error: (Real<R>)
-// expected-error: does not satisfy 'Real'
+// A Real that is not float, double or long double (nor a Precision of one): the first
+// argument must satisfy PrecisionChoice (a Real, or Precision<R, Position>).
+// expected-error: PrecisionChoice
 #include <pointmass/particle.hpp>
 
 int main() {
