@@ -327,7 +327,8 @@ TEST_CASE("expiry callback: each expiring particle once, in its final state; chi
 
 TEST_CASE_TEMPLATE("interpolation: alpha 0 is the previous position, 1 the current, bit for bit",
                    R, float, double) {
-  using Drawn = ParticleSystem<R, damping::PerSecond, position::Euler, features::Interpolation>;
+  // Kinematic: its last addition (a t^2 / 2) leaves positions off the grid of the previous ones.
+  using Drawn = ParticleSystem<R, damping::PerSecond, position::Kinematic, features::Interpolation>;
   std::mt19937 random(5);
   Drawn system;
   system.set_acceleration(gravity<R>());
@@ -336,6 +337,11 @@ TEST_CASE_TEMPLATE("interpolation: alpha 0 is the previous position, 1 the curre
     system.spawn(test::random_vector<R>(random, R(1000)), test::random_vector<R>(random, R(50)));
   }
   system.spawn({-R(0), R(0), -R(0)}, {});  // signed zeros must come back as they are
+  // Large steps that end near 0: previous + (current - previous) rounds away from current.
+  for (const R start : {R(1000.3), R(-77.7), R(123456.7)}) {
+    system.spawn({start, -start, start}, {-start * R(60) * R(0.999987), start * R(60) * R(0.99993),
+                                          -start * R(59.99)});
+  }
   for (int frame = 0; frame < 3; ++frame) {
     std::vector<Vector3<R>> before;
     for (std::size_t i = 0; i < system.size(); ++i) before.push_back(system.position(i));
