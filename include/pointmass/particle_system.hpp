@@ -243,7 +243,7 @@ class ParticleSystem
     block_ = block_.with_capacity(capacity);
   }
   /// Removes every particle; keeps the capacity. (Not inside an expiry callback.)
-  void clear() noexcept {
+  void clear() {
     if (!detail::check_not_expiring("clear", expiring_, 0)) return;
     if constexpr (has_handles) {
       for (std::size_t i = 0; i < size(); ++i) handles_.release(arrays().handle_slot[i]);
