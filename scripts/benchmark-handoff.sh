@@ -9,7 +9,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev libtbb-dev python3
 repetitions=${1:-15}
-build="$POINTMASS_ROOT/build/benchmark-system"
+build="${POINTMASS_BENCHMARK_BUILD:-$POINTMASS_ROOT/build/benchmark-system}"
 cmake -S "$POINTMASS_ROOT" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DPOINTMASS_BUILD_TESTS=OFF -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_BENCHMARKS=ON \
   -DCMAKE_CXX_FLAGS="-march=native" >/dev/null
