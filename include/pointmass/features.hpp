@@ -251,7 +251,7 @@ struct SystemLayout {
 
   /// Raw pointers to the arrays (nullptr for those the configuration does not store) and
   /// the number of live particles: what step_particle works on. `user` holds the pointers of
-  /// the user's columns (user_pointer<I>), which the step never touches.
+  /// the user's columns (`user_pointer<I>`), which the step never touches.
   struct Arrays {
     POINTMASS_DETAIL_COLUMNS(POINTMASS_DETAIL_MEMBER)
     std::size_t size = 0;

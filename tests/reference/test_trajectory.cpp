@@ -118,7 +118,7 @@ TEST_CASE("state_at matches Odeint at 1e-12 relative over the four shots, and is
   }
 }
 
-TEST_CASE("time_to_reach: the first time, against the closed form's root; never when it cannot") {
+TEST_CASE("time_to_reach: the first time, against the closed form's root, never when it cannot") {
   for (const Target& target : targets) {
     const Scene s = shot_named(target.shot);
     INFO(target.shot, " axis ", int(target.axis), " value ", target.value);

@@ -229,7 +229,7 @@ TEST_CASE("handles: live handles find their particle, dead ones nothing, after a
   CHECK_FALSE(system.find(Named::Handle{}).has_value());  // a default handle names nothing
 }
 
-TEST_CASE("handles: a slot's generation wraps by retiring the slot; old handles stay dead") {
+TEST_CASE("handles: a slot's generation wraps by retiring the slot, old handles stay dead") {
   // 8-bit generations: a slot serves generations 0 .. 254, then is retired.
   using Small = ParticleSystem<float, damping::None, position::Euler,
                                features::BasicHandles<std::uint8_t>>;
@@ -255,7 +255,7 @@ TEST_CASE("handles: a slot's generation wraps by retiring the slot; old handles 
   CHECK(system.find(bystander) == std::size_t{0});
 }
 
-TEST_CASE("expiry callback: each expiring particle once, in its final state; children next step") {
+TEST_CASE("expiry callback: each expiring particle once, in its final state, children next step") {
   using Fireworks = ParticleSystem<double, damping::PerSecond, position::Euler,
                                    features::Lifetime, features::Column<SpawnTag, int>>;
   Fireworks system;
