@@ -23,8 +23,8 @@ using pointmass::test::same_bits;
 
 // Per-second damping that counts how often its per-step factors (the power function) run.
 struct CountingPerSecond {
-  static constexpr int order = damping::PerSecond::order;
-  static constexpr bool exact_for_constant_acceleration =
+  [[maybe_unused]] static constexpr int order = damping::PerSecond::order;
+  [[maybe_unused]] static constexpr bool exact_for_constant_acceleration =
       damping::PerSecond::exact_for_constant_acceleration;
   template <Real R>
   using State = damping::PerSecond::State<R>;
