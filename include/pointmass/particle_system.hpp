@@ -693,8 +693,14 @@ class ParticleSystem
   /// whose lifetime is over. A negative, NaN or infinite duration is a contract violation,
   /// checked when POINTMASS_CHECKS is on; zero changes nothing. Allocates nothing.
   void step(R duration) {
-    NoCallback none;
-    step_calling(duration, none);
+    if constexpr (PositionPolicyFor<P, D>) {  // else the static_assert above has said why
+      if (!begin_step(duration)) return;
+      const StepParameters parameters = step_parameters(duration);
+      (backward_ ? Kernel::step_range_backward : Kernel::step_range)(arrays(), 0, size(),
+                                                                     parameters);
+      backward_ = !backward_ && Kernel::alternates(size());
+      finish_step();
+    }
   }
   /// As step(duration), calling on_expire(i) for each particle whose lifetime is over,
   /// before its removal (see "Expiry callback" above).
