@@ -112,16 +112,24 @@ using Precision =
 
 namespace detail {
 
+// Plain specialisations, without constraints: g++ 12 chose constrained partial
+// specialisations here nondeterministically (a build failed about once in ten compiles).
 template <class S>
 struct PrecisionTraits {};
-template <Real R>
-struct PrecisionTraits<R> {
+template <class R>
+struct RealPrecision {
   using real = R;
   using position = R;
 };
+template <>
+struct PrecisionTraits<float> : RealPrecision<float> {};
+template <>
+struct PrecisionTraits<double> : RealPrecision<double> {};
+template <>
+struct PrecisionTraits<long double> : RealPrecision<long double> {};
 // Read through Precision's members, so that naming a mismatched Precision anywhere stops at
 // its one sentence (the static_assert in its body).
-template <Real R, class Position>
+template <class R, class Position>
 struct PrecisionTraits<PositionsStoredAs<R, Position>> {
   using real = typename PositionsStoredAs<R, Position>::real;
   using position = typename PositionsStoredAs<R, Position>::position;
@@ -182,7 +190,7 @@ template <class R>
 using wider_real_t = std::conditional_t<std::is_same_v<R, float>, double, long double>;
 
 /// A Compensated<R> position: hi (the element) and lo (the error term), hi + lo.
-template <Real R>
+template <class R>
 struct PositionStorage<Compensated<R>> {
   using element = R;
   using value = wider_real_t<R>;
