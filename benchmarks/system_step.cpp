@@ -19,6 +19,7 @@
 #include <execution>
 #include <new>
 #include <random>
+#include <span>
 #include <type_traits>
 #include <vector>
 
@@ -341,6 +342,68 @@ BENCHMARK_TEMPLATE(BM_System, WithLifetime<float>)->Apply(middle);
 BENCHMARK_TEMPLATE(BM_System, WithForces<float>)->Apply(middle);
 BENCHMARK_TEMPLATE(BM_System, WithAcceleration<float>)->Apply(middle);
 BENCHMARK_TEMPLATE(BM_System, WithDamping<float>)->Apply(middle);
+
+// The renderer's hand-off (docs/particle-system.md): copying the positions out, after a step,
+// against the step itself, in the same run. Items: particles copied (or stepped).
+template <class R>
+using Interpolated =
+    ParticleSystem<R, damping::PerSecond, position::Euler, features::Interpolation>;
+struct GameColourTag {};
+template <class R>
+using GameSparks =
+    ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
+                   features::Interpolation, features::Handles,
+                   features::Column<GameColourTag, std::uint32_t>>;
+struct Vertex {  // a renderer's vertex: position, then a colour (interleaved)
+  float x, y, z;
+  std::uint32_t colour;
+};
+struct Vec3 {
+  float x, y, z;
+};
+
+template <class R, int Layout>
+void BM_CopyOut(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  auto system = make_system<Interpolated<R>>(n);
+  system.step(duration<R>());
+  std::vector<float> packed(3 * n), strided(6 * n);
+  std::vector<Vec3> vectors(n);
+  for (auto _ : state) {
+    if constexpr (Layout == 0) {  // x, y, z packed: float[3 n]
+      system.copy_positions(std::span<float>(packed));
+      benchmark::DoNotOptimize(packed.data());
+    } else if constexpr (Layout == 1) {  // into a vector of {x, y, z} structs
+      system.copy_positions(std::span<Vec3>(vectors));
+      benchmark::DoNotOptimize(vectors.data());
+    } else if constexpr (Layout == 2) {  // interleaved with three other floats: stride 6
+      system.copy_positions(std::span<float>(strided), 6);
+      benchmark::DoNotOptimize(strided.data());
+    } else {  // interpolated at alpha 0.5, packed
+      system.copy_interpolated_positions(R(0.5), std::span<float>(packed));
+      benchmark::DoNotOptimize(packed.data());
+    }
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+template <class R>
+void BM_CopyPacked(benchmark::State& state) { BM_CopyOut<R, 0>(state); }
+template <class R>
+void BM_CopyVec3(benchmark::State& state) { BM_CopyOut<R, 1>(state); }
+template <class R>
+void BM_CopyStrided(benchmark::State& state) { BM_CopyOut<R, 2>(state); }
+template <class R>
+void BM_CopyInterpolated(benchmark::State& state) { BM_CopyOut<R, 3>(state); }
+
+void handoff(benchmark::internal::Benchmark* b) { b->Arg(100000)->Arg(1000000); }
+BENCHMARK_TEMPLATE(BM_System, Sparks<float>)->Arg(1000000);
+BENCHMARK_TEMPLATE(BM_System, Interpolated<float>)->Apply(handoff);
+BENCHMARK_TEMPLATE(BM_System, GameSparks<float>)->Apply(handoff);
+BENCHMARK_TEMPLATE(BM_CopyPacked, float)->Apply(handoff);
+BENCHMARK_TEMPLATE(BM_CopyVec3, float)->Apply(handoff);
+BENCHMARK_TEMPLATE(BM_CopyStrided, float)->Apply(handoff);
+BENCHMARK_TEMPLATE(BM_CopyInterpolated, float)->Apply(handoff);
 
 template <class R>
 bool step_moves_particles() {

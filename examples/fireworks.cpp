@@ -3,20 +3,30 @@
 // Nine firework types (rules): each has a fuse range, a box its launch velocity is drawn
 // from, a damping (per second) and a payload: when the fuse burns out the firework bursts
 // into a number of fireworks of other types, each inheriting its velocity plus its own
-// random velocity. Types 1, 2, 6, 7 and 9 are launched from x = -5, 0 or 5; the others
-// appear only in bursts.
+// random velocity, and its colour. Types 1, 2, 6, 7 and 9 are launched from x = -5, 0 or 5
+// in a colour of their own; the others appear only in bursts.
 //
 // "Skip what a scene doesn't need": every particle of a type shares the type's damping, so
 // the scene keeps one ParticleSystem per type with uniform damping and uniform gravity:
-// d^t is computed once per type per frame, not once per spark, and nothing but position,
-// velocity, age and fuse is stored per spark.
+// d^t is computed once per type per step, not once per spark. Per spark it stores position,
+// velocity, age and fuse, the position before the last step (features::Interpolation) and
+// the spark's colour (a user column, moved with the spark whenever another burns out).
+//
+// A game's loop: physics at a fixed 60 Hz (FixedStep), rendering at whatever rate the frames
+// come (here an irregular, seeded sequence around 50 frames a second), each frame drawing the
+// sparks between the last two steps (copy_interpolated_positions at the accumulator's alpha).
+// A spark whose fuse ends is reported by the step's expiry callback in its final state; its
+// payload is created after the step, so it flies from the next step on.
 //
 // The random generator is seeded (--seed N), so a run is reproducible. Each second the
 // program prints the live sparks and the bursts; at the end it checks its own accounting
 // (every spark spawned is alive or has burnt out; every burnt-out fuse was within its type's
-// range) and prints "accounting: ok" or what went wrong (exit status 1).
+// range; every child has its parent's colour) and prints "accounting: ok" or what went
+// wrong (exit status 1).
 //
-//   fireworks [--seconds S] [--seed N] [--csv FILE]   (CSV: t,type,x,y,z every 0.25 s)
+//   fireworks [--seconds S] [--seed N] [--csv FILE]   (CSV: t,type,x,y,z,rgb every 0.25 s,
+//                                                      drawn positions)
+#include <pointmass/fixed_step.hpp>
 #include <pointmass/particle_system.hpp>
 #include <pointmass/pointmass.hpp>
 
@@ -26,13 +36,17 @@
 #include <cstdlib>
 #include <cstring>
 #include <random>
+#include <span>
 #include <vector>
 
 namespace {
 
 using namespace pointmass;
 using Number = float;  // the precision of the whole show
-using Sparks = ParticleSystem<Number, damping::PerSecond, position::Euler, features::Lifetime>;
+struct ColourTag {};   // names the colour column
+using Colour = std::uint32_t;  // 0xRRGGBB
+using Sparks = ParticleSystem<Number, damping::PerSecond, position::Euler, features::Lifetime,
+                              features::Interpolation, features::Column<ColourTag, Colour>>;
 
 struct Payload {
   int type;
@@ -60,6 +74,7 @@ const std::array<Rule, 9> rules{{
 }};
 
 constexpr std::array<int, 5> launched_types{1, 2, 6, 7, 9};
+constexpr std::array<Colour, 6> palette{0xff3030, 0x30ff30, 0x3060ff, 0xffd700, 0xff40ff, 0xffffff};
 
 /// Uniform in [low, high) from the generator's raw bits (the same on every platform, unlike
 /// std::uniform_real_distribution).
@@ -71,7 +86,7 @@ Number uniform(std::mt19937& random, Number low, Number high) {
 struct Show {
   std::array<Sparks, 9> sparks;
   std::mt19937 random;
-  long spawned = 0, burnt_out = 0, bursts = 0, bad_fuses = 0;
+  long spawned = 0, burnt_out = 0, bursts = 0, bad_fuses = 0, wrong_colours = 0;
 
   explicit Show(std::uint32_t seed) : random(seed) {
     for (std::size_t t = 0; t < sparks.size(); ++t) {
@@ -81,13 +96,14 @@ struct Show {
     }
   }
 
-  void create(int type, const Vector3<Number>& position, const Vector3<Number>& inherited) {
+  void create(int type, const Vector3<Number>& position, const Vector3<Number>& inherited,
+              Colour colour) {
     const Rule& rule = rules[static_cast<std::size_t>(type - 1)];
     const Vector3<Number> velocity{uniform(random, rule.min_velocity.x, rule.max_velocity.x),
                                  uniform(random, rule.min_velocity.y, rule.max_velocity.y),
                                  uniform(random, rule.min_velocity.z, rule.max_velocity.z)};
     Sparks& system = sparks[static_cast<std::size_t>(type - 1)];
-    const std::size_t i = system.spawn(position, inherited + velocity);
+    const std::size_t i = system.spawn(position, inherited + velocity, colour);
     system.set_lifetime(i, uniform(random, rule.min_fuse, rule.max_fuse));
     ++spawned;
   }
@@ -95,34 +111,36 @@ struct Show {
   void launch() {
     const int type = launched_types[random() % launched_types.size()];
     const Number x = Number(5) * Number(static_cast<int>(random() % 3) - 1);
-    create(type, {x, Number(0), Number(0)}, {});
+    create(type, {x, Number(0), Number(0)}, {}, palette[random() % palette.size()]);
   }
 
-  /// One frame: fireworks whose fuse ends in this step burst (at their state before it).
-  void frame(Number dt) {
+  /// One fixed step: every spark moves; each whose fuse ends bursts from its final state.
+  void step(Number dt) {
     struct Burst {
       int type;
       Vector3<Number> position, velocity;
+      Colour colour;
     };
     std::vector<Burst> bursting;
     for (std::size_t t = 0; t < sparks.size(); ++t) {
       Sparks& system = sparks[t];
       const Rule& rule = rules[t];
-      for (std::size_t i = 0; i < system.size(); ++i) {
-        if (system.age(i) + dt < system.lifetime(i)) continue;
+      system.step(dt, [&](std::size_t i) {  // spark i burns out: called once, before removal
         ++burnt_out;
         if (system.lifetime(i) < rule.min_fuse || system.lifetime(i) > rule.max_fuse) ++bad_fuses;
-        bursting.push_back({static_cast<int>(t + 1),
-                            {system.position_x()[i], system.position_y()[i], system.position_z()[i]},
-                            {system.velocity_x()[i], system.velocity_y()[i], system.velocity_z()[i]}});
-      }
-      system.step(dt);  // steps every spark and removes the burnt-out ones
+        bursting.push_back({static_cast<int>(t + 1), system.position(i), system.velocity(i),
+                            system.column<ColourTag>(i)});
+      });
     }
+    // The payloads go into other types' systems, some already stepped this step: creating
+    // them after every system has stepped makes every child fly from the next step on.
     for (const Burst& burst : bursting) {
       bool burst_any = false;
       for (const Payload& payload : rules[static_cast<std::size_t>(burst.type - 1)].payloads) {
+        Sparks& children = sparks[static_cast<std::size_t>(payload.type - 1)];
         for (int n = 0; n < payload.count; ++n) {
-          create(payload.type, burst.position, burst.velocity);
+          create(payload.type, burst.position, burst.velocity, burst.colour);
+          if (children.column<ColourTag>(children.size() - 1) != burst.colour) ++wrong_colours;
           burst_any = true;
         }
       }
@@ -160,38 +178,54 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "cannot write %s\n", csv_path);
     return 1;
   }
-  if (csv != nullptr) std::fprintf(csv, "t,type,x,y,z\n");
+  if (csv != nullptr) std::fprintf(csv, "t,type,x,y,z,rgb\n");
 
-  constexpr int frames_per_second = 60;
-  const Number dt = Number(1) / Number(frames_per_second);
+  constexpr int steps_per_second = 60;
+  const Number dt = Number(1) / Number(steps_per_second);
+  FixedStep<double> clock(1.0 / steps_per_second, 4);  // at most 4 steps a rendered frame
+  std::mt19937 frame_jitter(seed + 1);
   Show show(seed);
   long bursts_before = 0;
-  for (int frame = 0; frame < seconds * frames_per_second; ++frame) {
-    if (frame % (frames_per_second / 2) == 0) show.launch();  // two launches a second
-    show.frame(dt);
-    const int next = frame + 1;
-    if (csv != nullptr && next % (frames_per_second / 4) == 0) {
-      for (std::size_t t = 0; t < show.sparks.size(); ++t) {
-        Sparks& system = show.sparks[t];
-        for (std::size_t i = 0; i < system.size(); ++i) {
-          std::fprintf(csv, "%.2f,%zu,%.3f,%.3f,%.3f\n", double(next) / frames_per_second, t + 1,
-                       double(system.position_x()[i]), double(system.position_y()[i]),
-                       double(system.position_z()[i]));
-        }
+  long steps = 0;
+  double next_csv = 0.25;
+  std::vector<Number> drawn;  // the renderer's buffer: x, y, z per spark
+  while (steps < long(seconds) * steps_per_second) {
+    // A rendered frame of 15 to 25 ms: the fixed steps it is due, then the picture between.
+    const double frame_time = 0.015 + 0.010 * double(frame_jitter() % 1001) / 1000.0;
+    const auto frame = clock.advance(frame_time);
+    for (int s = 0; s < frame.steps && steps < long(seconds) * steps_per_second; ++s) {
+      if (steps % (steps_per_second / 2) == 0) show.launch();  // two launches a second
+      show.step(dt);
+      ++steps;
+      if (steps % steps_per_second == 0) {
+        std::printf("t = %2ld s: %5ld live sparks, %3ld bursts this second\n",
+                    steps / steps_per_second, show.live(), show.bursts - bursts_before);
+        bursts_before = show.bursts;
       }
     }
-    if (next % frames_per_second == 0) {
-      std::printf("t = %2d s: %5ld live sparks, %3ld bursts this second\n",
-                  next / frames_per_second, show.live(), show.bursts - bursts_before);
-      bursts_before = show.bursts;
+    const double drawn_at = (double(steps) + frame.alpha) / steps_per_second;
+    if (csv != nullptr && drawn_at >= next_csv) {
+      next_csv += 0.25;
+      for (std::size_t t = 0; t < show.sparks.size(); ++t) {
+        const Sparks& system = show.sparks[t];
+        drawn.resize(3 * system.size());
+        system.copy_interpolated_positions(Number(frame.alpha), std::span<Number>(drawn));
+        for (std::size_t i = 0; i < system.size(); ++i) {
+          std::fprintf(csv, "%.3f,%zu,%.3f,%.3f,%.3f,%06x\n", drawn_at, t + 1,
+                       double(drawn[3 * i]), double(drawn[3 * i + 1]), double(drawn[3 * i + 2]),
+                       unsigned(system.column<ColourTag>(i)));
+        }
+      }
     }
   }
   if (csv != nullptr) std::fclose(csv);
 
   std::printf("spawned %ld, burnt out %ld, live %ld, bursts %ld\n", show.spawned, show.burnt_out,
               show.live(), show.bursts);
-  if (show.spawned != show.burnt_out + show.live() || show.bad_fuses != 0) {
-    std::printf("accounting: FAILED (%ld fuses out of range)\n", show.bad_fuses);
+  if (show.spawned != show.burnt_out + show.live() || show.bad_fuses != 0 ||
+      show.wrong_colours != 0) {
+    std::printf("accounting: FAILED (%ld fuses out of range, %ld children in another colour)\n",
+                show.bad_fuses, show.wrong_colours);
     return 1;
   }
   std::printf("accounting: ok\n");

@@ -7,7 +7,9 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <span>
 #include <string>
+#include <vector>
 
 #include <pointmass/pointmass.hpp>
 
@@ -185,4 +187,71 @@ TEST_CASE_TEMPLATE("a finite mass is accepted only when mass() stays finite", R,
   CHECK(invalid_argument_of([&] { system.set_mass(0, huge); }).find("argument 'mass'") !=
         std::string::npos);
   CHECK(system.inverse_mass(0) == R(1));
+}
+
+TEST_CASE("the game features' arguments: removals in an expiry callback, buffers, strides, alpha") {
+  using Game = ParticleSystem<float, damping::None, position::Euler, features::Lifetime,
+                              features::Interpolation, features::Handles>;
+  Game system = three_particles<Game>();
+  system.set_lifetime(1, 0.01f);
+  // Removing inside the callback is refused, and nothing but the expiring particle goes.
+  std::string kill_message, kill_if_message, clear_message;
+  system.step(0.02f, [&](std::size_t i) {
+    CHECK(i == 1);
+    kill_message = invalid_argument_of([&] { system.kill(0); });
+    kill_if_message = invalid_argument_of([&] { (void)system.kill_if([](std::size_t) { return true; }); });
+    clear_message = invalid_argument_of([&] { system.clear(); });
+  });
+  CHECK(kill_message.find("kill: argument 'index' = 0 must be not removed during an expiry callback") !=
+        std::string::npos);
+  CHECK(kill_if_message.find("kill_if") != std::string::npos);
+  CHECK(clear_message.find("clear") != std::string::npos);
+  CHECK(system.size() == 2);
+  // After the step, removing works again.
+  system.kill(0);
+  CHECK(system.size() == 1);
+  system.spawn({5, 5, 5}, {});
+  const Game before = system;
+  // Copy-out: a stride below 3 and a buffer too short are reported; nothing is written.
+  std::vector<float> buffer(5, -1.0f);
+  CHECK(invalid_argument_of([&] { system.copy_positions(std::span<float>(buffer), 2); })
+            .find("copy_positions: argument 'stride' = 2 must be >= 3") != std::string::npos);
+  CHECK(invalid_argument_of([&] { system.copy_positions(std::span<float>(buffer), 3); })
+            .find("copy_positions: argument 'out' = 5 must be a buffer of at least") !=
+        std::string::npos);
+  CHECK(buffer == std::vector<float>(5, -1.0f));
+  // Alpha outside [0, 1] (or NaN).
+  for (const float alpha : {-0.5f, 1.5f, std::numeric_limits<float>::quiet_NaN()}) {
+    CHECK(invalid_argument_of([&] { (void)system.interpolated_position(0, alpha); })
+              .find("interpolated_position: argument 'alpha'") != std::string::npos);
+    CHECK(invalid_argument_of([&] {
+            system.copy_interpolated_positions(alpha, std::span<float>(buffer));
+          }).find("must be in [0, 1]") != std::string::npos);
+  }
+  CHECK(buffer == std::vector<float>(5, -1.0f));
+  CHECK(invalid_argument_of([&] { (void)system.handle(7); }).find("handle: argument 'index' = 7") !=
+        std::string::npos);
+  CHECK(same_particles(system, before));
+}
+
+TEST_CASE("FixedStep and the trajectory queries report bad arguments and keep their state") {
+  FixedStep<double> clock(1.0 / 64, 4);
+  CHECK(invalid_argument_of([&] { clock.set_step(0.0); }).find("set_step: argument 'step' = 0") !=
+        std::string::npos);
+  CHECK(invalid_argument_of([&] { clock.set_max_steps(0); })
+            .find("set_max_steps: argument 'max_steps' = 0 must be >= 1") != std::string::npos);
+  CHECK(clock.step() == 1.0 / 64);
+  CHECK(clock.max_steps() == 4);
+  (void)clock.advance(1.0 / 128);
+  CHECK(invalid_argument_of([&] { (void)clock.advance(-1.0); })
+            .find("advance: argument 'duration' = -1") != std::string::npos);
+  CHECK(clock.accumulated() == 1.0 / 128);
+
+  Particle<double, damping::Exact, position::Exact> shell;
+  shell.set_velocity({0, 10, 0});
+  CHECK(invalid_argument_of([&] { (void)state_at(shell, -1.0); })
+            .find("state_at: argument 'duration' = -1") != std::string::npos);
+  CHECK(invalid_argument_of([&] {
+          (void)time_to_reach(shell, Axis::y, std::numeric_limits<double>::infinity());
+        }).find("time_to_reach: argument 'value'") != std::string::npos);
 }

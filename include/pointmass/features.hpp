@@ -12,8 +12,11 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 
 #include "damping.hpp"
 #include "precision.hpp"
@@ -29,6 +32,41 @@ struct PerParticleAcceleration {};
 struct ForceAccumulator {};
 /// Each particle has an age and a lifetime; a step removes those whose age reaches it.
 struct Lifetime {};
+
+/// Each particle keeps its position before the last step (previous_position_x, y, z), for
+/// drawing between fixed steps: ParticleSystem::interpolated_position(i, alpha).
+struct Interpolation {};
+
+/// Stable handles: ParticleSystem::handle(i) names particle i for as long as it lives,
+/// through every swap-remove; find(handle) gives its current index, or nothing once it has
+/// died. Stores the particle's slot (a std::uint32_t) per particle, plus a table of slots
+/// (slot -> index and generation) beside the block. A slot's generation counts its deaths in
+/// G; a slot whose generation reaches the largest G is retired (never reused), so an old
+/// handle can never answer for a newer particle (std::uint32_t: after 4,294,967,294 lives).
+template <class G>
+struct BasicHandles {
+  static_assert(std::is_unsigned_v<G> && !std::is_same_v<G, bool>,
+                "features::BasicHandles<G>: the generation G is an unsigned integer type");
+  using generation_type = G;
+};
+using Handles = BasicHandles<std::uint32_t>;
+
+/// A column of the user's own type T per particle, named by the tag type `Tag`: stored in the
+/// same block and moved with its particle by every swap-remove (kill, kill_if, expiry); given
+/// at spawn, read and written through column<Tag>() (a span), column<Tag>(i) and
+/// set_column<Tag>(i, value). Not stepped. T is trivially copyable and trivially destructible
+/// (the block is copied with memcpy and freed without destructors), default-constructible
+/// (spawn without a value stores T{}), and aligned to at most 64 bytes.
+template <class Tag, class T>
+struct Column {
+  static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>,
+                "features::Column<Tag, T>: T must be trivially copyable and destructible");
+  static_assert(std::is_default_constructible_v<T>,
+                "features::Column<Tag, T>: T must be default-constructible");
+  static_assert(alignof(T) <= 64, "features::Column<Tag, T>: T aligned to at most 64 bytes");
+  using tag = Tag;
+  using type = T;
+};
 
 /// The former name of ForceAccumulator.
 using Forces [[deprecated("renamed features::ForceAccumulator")]] = ForceAccumulator;
@@ -61,6 +99,19 @@ enum class Column : unsigned char {
   damping_log_lo,
   age,
   lifetime,
+  previous_position_x,
+  previous_position_y,
+  previous_position_z,
+  handle_slot,
+};
+
+/// A stable name of one particle of a ParticleSystem with features::BasicHandles<G> (see
+/// there). A default handle names no particle.
+template <class G>
+struct ParticleHandle {
+  std::uint32_t slot = std::numeric_limits<std::uint32_t>::max();
+  G generation = 0;
+  friend constexpr bool operator==(const ParticleHandle&, const ParticleHandle&) = default;
 };
 
 namespace detail {
@@ -69,9 +120,81 @@ template <class T, class... List>
 inline constexpr bool contains_v = (std::is_same_v<T, List> || ...);
 
 template <class T>
+struct is_user_column : std::false_type {};
+template <class Tag, class T>
+struct is_user_column<features::Column<Tag, T>> : std::true_type {};
+
+template <class T>
+struct is_handles : std::false_type {};
+template <class G>
+struct is_handles<features::BasicHandles<G>> : std::true_type {};
+
+template <class T>
 inline constexpr bool is_feature_v =
     contains_v<T, features::PerParticleDamping, features::PerParticleAcceleration,
-               features::ForceAccumulator, features::Lifetime>;
+               features::ForceAccumulator, features::Lifetime, features::Interpolation> ||
+    is_user_column<T>::value || is_handles<T>::value;
+
+/// The handles feature among Features (void when there is none).
+template <class... Features>
+struct handles_of {
+  using type = void;
+};
+template <class First, class... Rest>
+struct handles_of<First, Rest...> {
+  using type = std::conditional_t<is_handles<First>::value, First,
+                                  typename handles_of<Rest...>::type>;
+};
+
+/// The user columns among Features, in order, as a std::tuple of features::Column types.
+template <class... Features>
+using user_columns_t = decltype(std::tuple_cat(
+    std::declval<std::conditional_t<is_user_column<Features>::value, std::tuple<Features>,
+                                    std::tuple<>>>()...));
+
+/// Pointer I of a layout's user columns (one base per column, so the pack of pointers stays
+/// an aggregate-like, trivially copyable struct that a device loop may take by value).
+template <std::size_t I, class T>
+struct UserPointer {
+  T* pointer = nullptr;
+};
+template <class Sequence, class Columns>
+struct UserPointersBuilder;
+template <std::size_t... I, class... Columns>
+struct UserPointersBuilder<std::index_sequence<I...>, std::tuple<Columns...>> {
+  struct type : UserPointer<I, typename Columns::type>... {};
+};
+/// The user columns' pointers (an empty struct when there are none).
+template <class Columns>
+using UserPointers =
+    typename UserPointersBuilder<std::make_index_sequence<std::tuple_size_v<Columns>>,
+                                 Columns>::type;
+
+/// The bytes per particle of the user columns Columns, and the largest element among them.
+template <class Columns>
+struct UserColumnSizes;
+template <class... Columns>
+struct UserColumnSizes<std::tuple<Columns...>> {
+  static constexpr std::size_t bytes = (std::size_t{0} + ... + sizeof(typename Columns::type));
+  static constexpr std::size_t largest = [] {
+    std::size_t result = 0;
+    ((result = sizeof(typename Columns::type) > result ? sizeof(typename Columns::type) : result),
+     ...);
+    return result;
+  }();
+};
+
+/// The index of the user column tagged Tag in Columns (the count when there is none).
+template <class Tag, class Columns, std::size_t I = 0>
+constexpr std::size_t user_column_index() {
+  if constexpr (I == std::tuple_size_v<Columns>) {
+    return I;
+  } else if constexpr (std::is_same_v<typename std::tuple_element_t<I, Columns>::tag, Tag>) {
+    return I;
+  } else {
+    return user_column_index<Tag, Columns, I + 1>();
+  }
+}
 
 /// One entry of the table: the Arrays member that holds the column, and whether this
 /// configuration stores it (a column not stored is never allocated, copied or stepped).
@@ -107,7 +230,11 @@ T element_of(T* Class::*);
   X(damping_log_hi,     R,              per_particle_log_damping) \
   X(damping_log_lo,     R,              per_particle_log_damping) \
   X(age,                R,              has_lifetime)           \
-  X(lifetime,           R,              has_lifetime)
+  X(lifetime,           R,              has_lifetime)           \
+  X(previous_position_x, position_element, has_interpolation)   \
+  X(previous_position_y, position_element, has_interpolation)   \
+  X(previous_position_z, position_element, has_interpolation)   \
+  X(handle_slot,        std::uint32_t,  has_handles)
 
 #define POINTMASS_DETAIL_MEMBER(name, type, stored) type* name = nullptr;
 #define POINTMASS_DETAIL_ENTRY(name, type, stored) ColumnEntry<&Arrays::name, (stored)>{},
@@ -124,6 +251,12 @@ struct SystemLayout {
   using position_element = typename position_storage::element;
   /// Compensated<R> positions: an error column beside each position column.
   static constexpr bool compensated_positions = position_storage::compensated;
+  /// The handles feature (features::BasicHandles<G>), or void.
+  using handles = typename handles_of<Features...>::type;
+  /// The user's columns (features::Column<Tag, T>), in the order given, as a std::tuple.
+  using user_columns = user_columns_t<Features...>;
+  static constexpr std::size_t user_column_count = std::tuple_size_v<user_columns>;
+  using user_pointers = UserPointers<user_columns>;
 
   static constexpr bool per_particle_damping =
       contains_v<features::PerParticleDamping, Features...>;
@@ -142,12 +275,16 @@ struct SystemLayout {
       contains_v<features::PerParticleAcceleration, Features...>;
   static constexpr bool has_forces = contains_v<features::ForceAccumulator, Features...>;
   static constexpr bool has_lifetime = contains_v<features::Lifetime, Features...>;
+  static constexpr bool has_interpolation = contains_v<features::Interpolation, Features...>;
+  static constexpr bool has_handles = !std::is_void_v<handles>;
 
   /// Raw pointers to the arrays (nullptr for those the configuration does not store) and
-  /// the number of live particles: what step_particle works on.
+  /// the number of live particles: what step_particle works on. `user` holds the pointers of
+  /// the user's columns (`user_pointer<I>`), which the step never touches.
   struct Arrays {
     POINTMASS_DETAIL_COLUMNS(POINTMASS_DETAIL_MEMBER)
     std::size_t size = 0;
+    [[no_unique_address]] user_pointers user{};
   };
 
   /// Particle i's damping state, from the damping columns (per_particle_damping only).
@@ -181,6 +318,32 @@ struct SystemLayout {
   static constexpr bool read_only = log_damping_state && (C == Column::damping ||
                                                           C == Column::damping_log_hi ||
                                                           C == Column::damping_log_lo);
+  /// The element type of user column I.
+  template <std::size_t I>
+  using user_element_t = typename std::tuple_element_t<I, user_columns>::type;
+  /// The pointer of user column I in `arrays` (a const Arrays gives a const pointer member).
+  template <std::size_t I, class A>
+  static constexpr auto& user_pointer(A& arrays) noexcept {
+    using Base = UserPointer<I, user_element_t<I>>;
+    using Qualified = std::conditional_t<std::is_const_v<A>, const Base, Base>;
+    return static_cast<Qualified&>(arrays.user).pointer;
+  }
+  /// The index of the user column tagged Tag (user_column_count when there is none).
+  template <class Tag>
+  static constexpr std::size_t user_index = user_column_index<Tag, user_columns>();
+
+ private:
+  template <class A, class F, std::size_t... I>
+  static constexpr void for_each_user_array(A& arrays, F& f, std::index_sequence<I...>) {
+    (f(user_pointer<I>(arrays)), ...);
+  }
+  template <class F, std::size_t... I>
+  static constexpr void for_each_user_pair(Arrays& to, const Arrays& from, F& f,
+                                           std::index_sequence<I...>) {
+    (f(user_pointer<I>(to), user_pointer<I>(from)), ...);
+  }
+
+ public:
 
   /// Every column's entry, in block order.
   static constexpr auto columns = std::tuple{POINTMASS_DETAIL_COLUMNS(POINTMASS_DETAIL_ENTRY)};
@@ -206,6 +369,7 @@ struct SystemLayout {
               ...);
         },
         columns);
+    for_each_user_array(arrays, f, std::make_index_sequence<user_column_count>{});
   }
 
   /// Calls f(pointer of `to`, pointer of `from`) for every stored array, in block order.
@@ -222,11 +386,13 @@ struct SystemLayout {
               ...);
         },
         columns);
+    for_each_user_pair(to, from, f, std::make_index_sequence<user_column_count>{});
   }
 
   /// How many arrays the block holds.
   static constexpr std::size_t array_count = std::apply(
-      [](auto... entry) { return (std::size_t{decltype(entry)::stored} + ...); }, columns);
+      [](auto... entry) { return (std::size_t{decltype(entry)::stored} + ...); }, columns) +
+      user_column_count;
 
   /// Bytes each particle occupies in the arrays.
   static constexpr std::size_t bytes_per_particle = std::apply(
@@ -235,7 +401,7 @@ struct SystemLayout {
                                          : std::size_t{0}) +
                 ...);
       },
-      columns);
+      columns) + UserColumnSizes<user_columns>::bytes;
 
   /// The largest element of any stored array.
   static constexpr std::size_t largest_element = std::apply(
@@ -246,7 +412,9 @@ struct SystemLayout {
                         ? sizeof(decltype(element_of(decltype(entry)::member)))
                         : largest),
          ...);
-        return largest;
+        return largest > UserColumnSizes<user_columns>::largest
+                   ? largest
+                   : UserColumnSizes<user_columns>::largest;
       },
       columns);
 };

@@ -73,6 +73,26 @@ class CountingIterator {
 
 }  // namespace detail
 
+namespace detail {
+/// The particles' step on `policy`, in chunks of 16,384 (each through the vectorised loop);
+/// false when there was nothing to do (see begin_step).
+template <class ExecutionPolicy, class System, class R>
+bool step_chunks(ExecutionPolicy&& policy, System& system, R duration) {
+  if (!system.begin_step(duration)) return false;
+  constexpr std::size_t chunk = 16384;
+  const typename System::Arrays& arrays = system.arrays();
+  const typename System::StepParameters parameters = system.step_parameters(duration);
+  const std::size_t size = system.size();
+  const std::size_t chunks = (size + chunk - 1) / chunk;
+  std::for_each(std::forward<ExecutionPolicy>(policy), CountingIterator(0),
+                CountingIterator(chunks), [&](std::size_t c) {
+                  const std::size_t begin = c * chunk;
+                  System::step_range(arrays, begin, std::min(begin + chunk, size), parameters);
+                });
+  return true;
+}
+}  // namespace detail
+
 /// Steps `system` by `duration` with the execution policy `policy` (for example
 /// std::execution::par_unseq): the particles are split into chunks of 16,384, each stepped
 /// by the vectorised loop; expiry (Lifetime) then runs on the calling thread. The results
@@ -80,20 +100,22 @@ class CountingIterator {
 template <class ExecutionPolicy, Real R, class D, class P, class... Features>
   requires std::is_execution_policy_v<std::remove_cvref_t<ExecutionPolicy>>
 void step(ExecutionPolicy&& policy, ParticleSystem<R, D, P, Features...>& system, R duration) {
-  using System = ParticleSystem<R, D, P, Features...>;
-  if (!system.begin_step(duration)) return;
-  constexpr std::size_t chunk = 16384;
-  const typename System::Arrays& arrays = system.arrays();
-  const typename System::StepParameters parameters = system.step_parameters(duration);
-  const std::size_t size = system.size();
-  const std::size_t chunks = (size + chunk - 1) / chunk;
-  std::for_each(std::forward<ExecutionPolicy>(policy), detail::CountingIterator(0),
-                detail::CountingIterator(chunks), [&](std::size_t c) {
-                  const std::size_t begin = c * chunk;
-                  System::step_range(arrays, begin, std::min(begin + chunk, size), parameters);
-                });
-  system.finish_step();
+  if (detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration)) {
+    system.finish_step();
+  }
 }
 
+/// As step(policy, system, duration), calling on_expire(i) for each particle whose lifetime is
+/// over, on the calling thread, before its removal (ParticleSystem::step(t, on_expire)).
+template <class ExecutionPolicy, Real R, class D, class P, class... Features, class OnExpire>
+  requires(std::is_execution_policy_v<std::remove_cvref_t<ExecutionPolicy>> &&
+           ParticleSystem<R, D, P, Features...>::has_lifetime &&
+           std::is_invocable_v<OnExpire&, std::size_t>)
+void step(ExecutionPolicy&& policy, ParticleSystem<R, D, P, Features...>& system, R duration,
+          OnExpire&& on_expire) {
+  if (detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration)) {
+    system.finish_step(on_expire);
+  }
+}
 
 }  // namespace pointmass

@@ -42,6 +42,13 @@
 //   Lifetime                    age, lifetime (seconds); a step  particles live until killed
 //                               ages every particle and removes
 //                               those with age >= lifetime
+//   Interpolation               previous position x, y, z (the   no interpolated positions
+//                               position before the last step)
+//   Handles                     the particle's slot (4 bytes),   no stable names: an index
+//                               and a slot table beside the      is the only name
+//                               block (8 bytes a slot)
+//   Column<Tag, T>              a T of the user's, moved with    nothing
+//                               its particle, never stepped
 //
 // With uniform per-second damping a step computes d^t once, not once per particle. With
 // PerParticleDamping, PerSecond and Exact compute it per particle with the library's
@@ -55,7 +62,15 @@
 //
 // Invalidation. Killing is swap-remove: `kill(i)` moves the last particle into slot i. Order
 // is not kept, and an index names a particle only until the next kill, expiry or step with
-// Lifetime. Spans, `arrays()` and pointers into them are valid until the next spawn that
+// Lifetime; a handle (features::Handles) names it for as long as it lives.
+//
+// Expiry callback: `step(t, on_expire)` calls on_expire(i) for each particle whose lifetime
+// is over, once, after the step and before its removal, so that particle i still holds its
+// final state (position, velocity, age, user columns). Spawning inside the callback is
+// allowed and immediate: the new particles are appended, are not expired by this step and
+// are stepped from the next step on (a spawn that grows the block moves the arrays, so read
+// the parent through the system, not through a span taken before). Removing particles
+// (kill, kill_if, clear) inside the callback is a contract violation and does nothing. Spans, `arrays()` and pointers into them are valid until the next spawn that
 // grows the block, `reserve`, `shrink`, move or swap (a growing spawn moves every array).
 //
 // Access: `position_x()`, `velocity_y()`, ... (the six arrays every system has) and
@@ -72,16 +87,21 @@
 // the device's power function agreeing with the host's).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 
 #include "config.hpp"
 #include "damping.hpp"
+#include "detail/handle_table.hpp"
 #include "detail/soa_block.hpp"
 #include "detail/system_kernel.hpp"
 #include "detail/validate.hpp"
@@ -134,6 +154,17 @@ class ParticleSystem
   static constexpr bool per_particle_acceleration = Layout::per_particle_acceleration;
   static constexpr bool has_forces = Layout::has_forces;
   static constexpr bool has_lifetime = Layout::has_lifetime;
+  static constexpr bool has_interpolation = Layout::has_interpolation;
+  static constexpr bool has_handles = Layout::has_handles;
+  /// The user's columns (features::Column<Tag, T>) as a std::tuple, and how many.
+  using user_columns = typename Layout::user_columns;
+  static constexpr std::size_t user_column_count = Layout::user_column_count;
+  /// The element type of the user column tagged Tag.
+  template <class Tag>
+  using user_element_t = typename Layout::template user_element_t<Layout::template user_index<Tag>>;
+  /// True when the user column tagged Tag exists.
+  template <class Tag>
+  static constexpr bool has_column = Layout::template user_index<Tag> < user_column_count;
   /// True when the damping policy has a damping value at all (not damping::None).
   static constexpr bool stores_damping = !std::is_empty_v<damping_state>;
   static_assert(!per_particle_damping || stores_damping,
@@ -151,6 +182,28 @@ class ParticleSystem
   /// Returned by spawn when its input was rejected.
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
 
+ private:
+  using HandleTable = std::conditional_t<
+      has_handles,
+      detail::HandleTable<typename detail::handles_of<Features..., features::Handles>::type::
+                              generation_type>,
+      detail::NoHandleTable>;
+  static_assert(((detail::is_handles<Features>::value ? 1 : 0) + ... + 0) <= 1,
+                "ParticleSystem: at most one features::Handles / BasicHandles<G>");
+  template <std::size_t... I>
+  static constexpr bool unique_tags(std::index_sequence<I...>) {
+    return ((Layout::template user_index<
+                 typename std::tuple_element_t<I, user_columns>::tag> == I) &&
+            ...);
+  }
+  static_assert(unique_tags(std::make_index_sequence<user_column_count>{}),
+                "ParticleSystem: two features::Column<Tag, T> with the same Tag");
+
+ public:
+  /// A particle's stable name (features::Handles): see handle() and find().
+  using Handle = typename std::conditional_t<has_handles, HandleTable,
+                                             detail::HandleTable<std::uint32_t>>::Handle;
+
   // --- construction --------------------------------------------------------------------------
 
   ParticleSystem() = default;
@@ -161,12 +214,14 @@ class ParticleSystem
   ParticleSystem(const ParticleSystem& other)
       : block_(other.block_.with_capacity(other.capacity())),
         damping_(other.damping_),
-        acceleration_(other.acceleration_) {}
+        acceleration_(other.acceleration_),
+        handles_(other.handles_) {}
   ParticleSystem(ParticleSystem&& other) noexcept
       : block_(std::move(other.block_)),
         backward_(std::exchange(other.backward_, false)),
         damping_(other.damping_),
-        acceleration_(other.acceleration_) {}
+        acceleration_(other.acceleration_),
+        handles_(std::move(other.handles_)) {}
   ParticleSystem& operator=(ParticleSystem other) noexcept {
     swap(other);
     return *this;
@@ -178,6 +233,7 @@ class ParticleSystem
     std::swap(backward_, other.backward_);
     std::swap(damping_, other.damping_);
     std::swap(acceleration_, other.acceleration_);
+    std::swap(handles_, other.handles_);
   }
   friend void swap(ParticleSystem& a, ParticleSystem& b) noexcept { a.swap(b); }
 
@@ -187,17 +243,30 @@ class ParticleSystem
   bool empty() const noexcept { return size() == 0; }
   std::size_t capacity() const noexcept { return block_.capacity(); }
   /// The largest capacity a system of this configuration can have.
-  static constexpr std::size_t max_size() noexcept { return Block::max_capacity; }
+  static constexpr std::size_t max_size() noexcept {
+    if constexpr (has_handles) {  // slots and indices are 32-bit (detail/handle_table.hpp)
+      return std::min(Block::max_capacity, HandleTable::max_slots);
+    } else {
+      return Block::max_capacity;
+    }
+  }
 
   /// Makes room for `capacity` particles in one block (no-op if there is room already).
   /// A capacity beyond max_size() throws std::length_error and changes nothing.
   void reserve(std::size_t capacity) {
     if (capacity <= this->capacity()) return;
     if (capacity > max_size()) throw_length_error("reserve", capacity);
+    if constexpr (has_handles) handles_.reserve(capacity);
     block_ = block_.with_capacity(capacity);
   }
-  /// Removes every particle; keeps the capacity.
-  void clear() noexcept { set_size(0); }
+  /// Removes every particle; keeps the capacity. (Not inside an expiry callback.)
+  void clear() {
+    if (!detail::check_not_expiring("clear", expiring_, 0)) return;
+    if constexpr (has_handles) {
+      for (std::size_t i = 0; i < size(); ++i) handles_.release(arrays().handle_slot[i]);
+    }
+    set_size(0);
+  }
 
   // --- uniform values ------------------------------------------------------------------------
 
@@ -237,9 +306,16 @@ class ParticleSystem
     if (!detail::check_finite("spawn", "velocity", velocity)) return npos;
     if (size() == capacity()) grow();
     const std::size_t i = size();
+    std::uint32_t slot = 0;
+    if constexpr (has_handles) {
+      slot = handles_.acquire(i);
+      if (slot == HandleTable::none) throw_length_error("spawn", HandleTable::max_slots + 1);
+    }
     set_size(i + 1);
     const Arrays& a = arrays();
     store_position(i, position);
+    if constexpr (has_handles) a.handle_slot[i] = slot;
+    clear_user_columns(i, std::make_index_sequence<user_column_count>{});
     store(a.velocity_x, a.velocity_y, a.velocity_z, i, velocity);
     if constexpr (per_particle_acceleration) {
       store(a.acceleration_x, a.acceleration_y, a.acceleration_z, i, {});
@@ -268,6 +344,7 @@ class ParticleSystem
         store(a.position_error_x, a.position_error_y, a.position_error_z, i,
               particle.stored_position_error());
       }
+      store_previous_position(i);
     }
     if constexpr (per_particle_acceleration) {
       store(a.acceleration_x, a.acceleration_y, a.acceleration_z, i, particle.acceleration());
@@ -281,16 +358,53 @@ class ParticleSystem
     }
     return i;
   }
+  /// Adds a particle with a value for each user column, in the order of the features.
+  template <class... Values>
+    requires(sizeof...(Values) > 0 && sizeof...(Values) == user_column_count)
+  std::size_t spawn(const Vector3<position_value>& position, const Vector3<R>& velocity,
+                    const Values&... values) {
+    const std::size_t i = spawn(position, velocity);
+    if (i != npos) store_user_columns(i, std::make_index_sequence<user_column_count>{}, values...);
+    return i;
+  }
+  /// Spawns `count` particles, reserving once: particle k is spawn(generator(k)...), where
+  /// generator(k) returns the arguments of a spawn as a tuple-like value (a std::pair of
+  /// position and velocity, a std::tuple with the user columns' values after them) or a
+  /// particle_type. Returns how many were added (a rejected one is reported and skipped);
+  /// they are the last ones, [size() - returned, size()), until the next removal.
+  template <class Generator>
+  std::size_t spawn_burst(std::size_t count, Generator&& generator) {
+    if (count > max_size() - size()) throw_length_error("spawn_burst", size() + count);
+    if (size() + count > capacity()) {
+      reserve(std::max(size() + count, std::min(2 * capacity(), max_size())));
+    }
+    std::size_t spawned = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+      decltype(auto) made = generator(k);
+      std::size_t i;
+      if constexpr (std::is_convertible_v<decltype(made), const particle_type&>) {
+        i = spawn(static_cast<const particle_type&>(made));
+      } else {
+        i = std::apply([&](const auto&... arguments) { return spawn(arguments...); }, made);
+      }
+      if (i != npos) ++spawned;
+    }
+    return spawned;
+  }
 
   /// Removes particle `index` by moving the last particle into its place (order not kept).
   void kill(std::size_t index) {
-    if (detail::check_index("kill", index, size())) remove(index);
+    if (detail::check_not_expiring("kill", expiring_, index) &&
+        detail::check_index("kill", index, size())) {
+      remove(index);
+    }
   }
   /// Removes every particle for which predicate(index) is true, by swap-remove, and returns
   /// how many. The predicate sees each particle once; after a removal it is asked about the
   /// particle moved into the freed index.
   template <class Predicate>
   std::size_t kill_if(Predicate&& predicate) {
+    if (!detail::check_not_expiring("kill_if", expiring_, 0)) return 0;
     const std::size_t before = size();
     std::size_t i = 0;
     while (i < size()) {
@@ -357,7 +471,8 @@ class ParticleSystem
   }
 
   void set_position(std::size_t i, const Vector3<position_value>& position) {
-    if (detail::check_index("set_position", i, size()) && valid_position("set_position", position)) {
+    if (detail::check_index("set_position", i, size()) &&
+        valid_position("set_position", position)) {
       store_position(i, position);
     }
   }
@@ -454,6 +569,127 @@ class ParticleSystem
     }
   }
 
+  // --- user columns (features::Column<Tag, T>) ------------------------------------------------
+
+  /// The user column tagged Tag, over the live particles.
+  template <class Tag>
+    requires has_column<Tag>
+  std::span<user_element_t<Tag>> column() noexcept {
+    return {Layout::template user_pointer<Layout::template user_index<Tag>>(arrays()), size()};
+  }
+  template <class Tag>
+    requires has_column<Tag>
+  std::span<const user_element_t<Tag>> column() const noexcept {
+    return {Layout::template user_pointer<Layout::template user_index<Tag>>(arrays()), size()};
+  }
+  /// Particle i's value in the user column tagged Tag.
+  template <class Tag>
+    requires has_column<Tag>
+  user_element_t<Tag> column(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
+    if (!valid_index("column", i)) return {};
+    return Layout::template user_pointer<Layout::template user_index<Tag>>(arrays())[i];
+  }
+  template <class Tag>
+    requires has_column<Tag>
+  void set_column(std::size_t i, const user_element_t<Tag>& value) {
+    if (detail::check_index("set_column", i, size())) {
+      Layout::template user_pointer<Layout::template user_index<Tag>>(arrays())[i] = value;
+    }
+  }
+
+  // --- stable handles (features::Handles) ----------------------------------------------------
+
+  /// The handle of particle i: it finds this particle for as long as it lives. O(1).
+  Handle handle(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS)
+    requires has_handles
+  {
+    if (!valid_index("handle", i)) return {};
+    return handles_.handle(arrays().handle_slot[i]);
+  }
+  /// The current index of the particle `handle` names, or nothing once it has died. O(1).
+  std::optional<std::size_t> find(const Handle& handle) const noexcept
+    requires has_handles
+  {
+    return handles_.find(handle);
+  }
+  /// True while the particle `handle` names is alive.
+  bool contains(const Handle& handle) const noexcept
+    requires has_handles
+  {
+    return handles_.find(handle).has_value();
+  }
+  /// Bytes of the slot table beside the block (8 a slot with std::uint32_t generations).
+  std::size_t handle_table_bytes() const noexcept
+    requires has_handles
+  {
+    return handles_.bytes();
+  }
+
+  // --- fixed steps: interpolation (features::Interpolation) ----------------------------------
+
+  /// Particle i's position before the last step (its spawn or set_position position if it
+  /// has not stepped since).
+  Vector3<position_element> previous_position(std::size_t i) const
+      noexcept(!POINTMASS_HOST_CHECKS)
+    requires has_interpolation
+  {
+    if (!valid_index("previous_position", i)) return {};
+    return {arrays().previous_position_x[i], arrays().previous_position_y[i],
+            arrays().previous_position_z[i]};
+  }
+  /// Particle i's position at the fraction `alpha` in [0, 1] of the last step: alpha 0 gives
+  /// the previous position and 1 the current one, bit for bit; between them
+  /// previous + (current - previous) alpha.
+  Vector3<position_element> interpolated_position(std::size_t i, R alpha) const
+    requires has_interpolation
+  {
+    if (!detail::check_index("interpolated_position", i, size()) ||
+        !detail::check_fraction("interpolated_position", "alpha", alpha)) {
+      return {};
+    }
+    Vector3<position_element> out{};
+    for_each_output_position(alpha, i, i + 1, [&](std::size_t, auto x, auto y, auto z) {
+      out = {x, y, z};
+    });
+    return out;
+  }
+
+  // --- renderer hand-off ---------------------------------------------------------------------
+
+  /// Copies the positions into `out` as x, y, z at out[i * stride], out[i * stride + 1],
+  /// out[i * stride + 2] (stride >= 3: 3 packed, more for interleaved vertices; pass
+  /// buffer.subspan(offset) to start elsewhere), converted to T. `out` needs
+  /// (size() - 1) * stride + 3 elements; a shorter one is reported and nothing is written.
+  template <class T>
+    requires std::is_arithmetic_v<T>
+  void copy_positions(std::span<T> out, std::size_t stride = 3) const {
+    copy_strided("copy_positions", R(1), out, stride);
+  }
+  /// Copies the positions into vectors with x, y, z members (glm::vec3, ...): out[i] for
+  /// particle i; `out` needs size() elements.
+  template <class V>
+    requires(!std::is_arithmetic_v<V> && requires(V& v) { v.x = v.y = v.z; })
+  void copy_positions(std::span<V> out) const {
+    copy_vectors("copy_positions", R(1), out);
+  }
+  /// As copy_positions, with the positions at the fraction alpha of the last step
+  /// (interpolated_position).
+  template <class T>
+    requires(has_interpolation && std::is_arithmetic_v<T>)
+  void copy_interpolated_positions(R alpha, std::span<T> out, std::size_t stride = 3) const {
+    if (detail::check_fraction("copy_interpolated_positions", "alpha", alpha)) {
+      copy_strided("copy_interpolated_positions", alpha, out, stride);
+    }
+  }
+  template <class V>
+    requires(has_interpolation && !std::is_arithmetic_v<V> &&
+             requires(V& v) { v.x = v.y = v.z; })
+  void copy_interpolated_positions(R alpha, std::span<V> out) const {
+    if (detail::check_fraction("copy_interpolated_positions", "alpha", alpha)) {
+      copy_vectors("copy_interpolated_positions", alpha, out);
+    }
+  }
+
   // --- spans for renderers and other engines (valid until the block grows or moves) ---------
 
   /// Column C of the live particles, for any column this configuration stores. The damping
@@ -519,6 +755,13 @@ class ParticleSystem
       finish_step();
     }
   }
+  /// As step(duration), calling on_expire(i) for each particle whose lifetime is over,
+  /// before its removal (see "Expiry callback" above).
+  template <class OnExpire>
+    requires(has_lifetime && std::is_invocable_v<OnExpire&, std::size_t>)
+  void step(R duration, OnExpire&& on_expire) {
+    step_calling(duration, on_expire);
+  }
 
   /// True when the next `step` walks the particles backwards (see alternates). A copy
   /// starts forwards; a move or swap takes the direction along.
@@ -536,6 +779,30 @@ class ParticleSystem
   /// lifetime. Called by step; call it yourself after stepping through step_particle
   /// elsewhere.
   void finish_step() {
+    NoCallback none;
+    finish_calling(none);
+  }
+  /// finish_step calling on_expire(i) for each expiring particle before its removal.
+  template <class OnExpire>
+    requires(has_lifetime && std::is_invocable_v<OnExpire&, std::size_t>)
+  void finish_step(OnExpire&& on_expire) {
+    finish_calling(on_expire);
+  }
+
+ private:
+  template <class OnExpire>
+  void step_calling(R duration, OnExpire& on_expire) {
+    if constexpr (PositionPolicyFor<P, D>) {  // else the static_assert above has said why
+      if (!begin_step(duration)) return;
+      const StepParameters parameters = step_parameters(duration);
+      (backward_ ? Kernel::step_range_backward : Kernel::step_range)(arrays(), 0, size(),
+                                                                     parameters);
+      backward_ = !backward_ && Kernel::alternates(size());
+      finish_calling(on_expire);
+    }
+  }
+  template <class OnExpire>
+  void finish_calling(OnExpire& on_expire) {
     if constexpr (has_lifetime) {
       // kill_if's order and result, but a step expires few particles: a block of
       // vector_block particles none of which has expired (a test that vectorises) is
@@ -554,6 +821,10 @@ class ParticleSystem
           }
         }
         if (expired(age[i], lifetime[i])) {
+          if constexpr (!std::is_same_v<std::remove_cvref_t<OnExpire>, NoCallback>) {
+            const ExpiringScope scope(expiring_);
+            on_expire(std::as_const(i));
+          }
           remove(i);
         } else {
           ++i;
@@ -562,6 +833,93 @@ class ParticleSystem
     }
   }
 
+  // step and finish_step without a callback (any configuration, Lifetime or not).
+  struct NoCallback {
+    void operator()(std::size_t) const noexcept {}
+  };
+  // Marks the system as inside an expiry callback while it lives.
+  struct ExpiringScope {
+    bool& flag;
+    explicit ExpiringScope(bool& expiring) noexcept : flag(expiring) { flag = true; }
+    ExpiringScope(const ExpiringScope&) = delete;
+    ExpiringScope& operator=(const ExpiringScope&) = delete;
+    ~ExpiringScope() { flag = false; }
+  };
+
+  template <std::size_t... I>
+  void clear_user_columns([[maybe_unused]] std::size_t i, std::index_sequence<I...>) noexcept {
+    ((Layout::template user_pointer<I>(arrays())[i] = typename Layout::template user_element_t<I>{}),
+     ...);
+  }
+  template <std::size_t... I, class... Values>
+  void store_user_columns(std::size_t i, std::index_sequence<I...>, const Values&... values) {
+    ((Layout::template user_pointer<I>(arrays())[i] = values), ...);
+  }
+
+  // Calls store(i, x, y, z) for particles [first, last) with the position at the fraction
+  // alpha of the last step (alpha 1: the current position; without Interpolation always).
+  // The choice of alpha is made once, outside the loop, so 0 and 1 copy bits.
+  template <class Store>
+  void for_each_output_position(R alpha, std::size_t first, std::size_t last,
+                                Store&& store_one) const {
+    const Arrays& a = arrays();
+    bool current = true;
+    if constexpr (has_interpolation) current = real_equal(alpha, R(1));
+    if (current) {
+      for (std::size_t i = first; i < last; ++i) {
+        store_one(i, a.position_x[i], a.position_y[i], a.position_z[i]);
+      }
+      return;
+    }
+    if constexpr (has_interpolation) {
+      if (real_equal(alpha, R(0))) {
+        for (std::size_t i = first; i < last; ++i) {
+          store_one(i, a.previous_position_x[i], a.previous_position_y[i],
+                    a.previous_position_z[i]);
+        }
+        return;
+      }
+      using E = position_element;
+      const E fraction = static_cast<E>(alpha);
+      for (std::size_t i = first; i < last; ++i) {
+        const E px = a.previous_position_x[i];
+        const E py = a.previous_position_y[i];
+        const E pz = a.previous_position_z[i];
+        store_one(i, px + (a.position_x[i] - px) * fraction,
+                  py + (a.position_y[i] - py) * fraction, pz + (a.position_z[i] - pz) * fraction);
+      }
+    }
+  }
+  template <class T>
+  void copy_strided(const char* function, R alpha, std::span<T> out, std::size_t stride) const {
+    if (!detail::check_at_least(function, "stride", stride, 3)) return;
+    if (size() == 0) return;
+    if (!detail::check_strided_buffer(function, out.size(),
+                              (size() - 1) * stride + 3)) {  // no overflow: < max_size() * stride
+      return;
+    }
+    T* data = out.data();
+    for_each_output_position(alpha, 0, size(), [&](std::size_t i, auto x, auto y, auto z) {
+      T* vertex = data + i * stride;
+      vertex[0] = static_cast<T>(x);
+      vertex[1] = static_cast<T>(y);
+      vertex[2] = static_cast<T>(z);
+    });
+  }
+  template <class V>
+  void copy_vectors(const char* function, R alpha, std::span<V> out) const {
+    if (!detail::check_buffer(function, "out", out.size(), size())) return;
+    V* data = out.data();
+    for_each_output_position(alpha, 0, size(), [&](std::size_t i, auto x, auto y, auto z) {
+      using T = std::remove_cvref_t<decltype(data[i].x)>;
+      data[i].x = static_cast<T>(x);
+      data[i].y = static_cast<T>(y);
+      data[i].z = static_cast<T>(z);
+    });
+  }
+
+
+ public:
   /// True when a particle of this `age` and `lifetime` has expired: its age reached a finite
   /// lifetime (an infinite one never expires, even when the age itself overflows to
   /// infinity). finish_step's test, for loops of one's own (pointmass/kokkos.hpp).
@@ -601,7 +959,11 @@ class ParticleSystem
 
   void remove(std::size_t index) noexcept {
     const std::size_t last = size() - 1;
-    if (index != last) Block::move_particle(arrays(), last, index);
+    if constexpr (has_handles) handles_.release(arrays().handle_slot[index]);
+    if (index != last) {
+      Block::move_particle(arrays(), last, index);
+      if constexpr (has_handles) handles_.relocate(arrays().handle_slot[index], index);
+    }
     set_size(last);
   }
 
@@ -640,6 +1002,16 @@ class ParticleSystem
     } else {
       store(a.position_x, a.position_y, a.position_z, i, position);
     }
+    if constexpr (has_interpolation) store_previous_position(i);  // a jump, not a motion
+  }
+  // The previous position (features::Interpolation) := the stored position column.
+  void store_previous_position([[maybe_unused]] std::size_t i) noexcept {
+    if constexpr (has_interpolation) {
+      const Arrays& a = arrays();
+      a.previous_position_x[i] = a.position_x[i];
+      a.previous_position_y[i] = a.position_y[i];
+      a.previous_position_z[i] = a.position_z[i];
+    }
   }
   static Vector3<float> relative(const Arrays& a, std::size_t i,
                                  const Vector3<position_value>& origin) noexcept {
@@ -658,8 +1030,10 @@ class ParticleSystem
 
   Block block_;
   bool backward_ = false;  // the next step walks backwards (see alternates)
+  bool expiring_ = false;  // inside an expiry callback (removals are refused)
   [[no_unique_address]] damping_state damping_{};
   Vector3<R> acceleration_{};
+  [[no_unique_address]] HandleTable handles_{};
 };
 
 }  // namespace pointmass

@@ -9,6 +9,7 @@
 #include "config.hpp"
 #include "damping.hpp"
 #include "features.hpp"
+#include "fixed_step.hpp"
 #include "forces.hpp"
 #include "gravity.hpp"
 #include "particle.hpp"
@@ -16,4 +17,5 @@
 #include "position.hpp"
 #include "quantities.hpp"
 #include "real.hpp"
+#include "trajectory.hpp"
 #include "vector3.hpp"

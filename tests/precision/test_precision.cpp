@@ -12,8 +12,10 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include <pointmass/pointmass.hpp>
@@ -422,6 +424,58 @@ TEST_CASE("spawn(particle) copies a compensated position's error term: the syste
     system.step(1.0f / 60.0f);
   }
   CHECK(system_matches(system, 0, particle));
+}
+
+// --- the game features with wide positions -----------------------------------------------------
+
+struct OwnerTag {};
+
+TEST_CASE_TEMPLATE("game features with wide positions: previous positions, interpolation, user columns, handles", S,
+                   DoublePositions, CompensatedPositions) {
+  using System = pm::ParticleSystem<S, pm::damping::PerSecond, pm::position::Euler,
+                                    pm::features::Interpolation, pm::features::Handles,
+                                    pm::features::Column<OwnerTag, int>>;
+  using E = typename System::position_element;
+  System system(4);
+  system.set_acceleration(pm::gravity<float>());
+  system.set_damping(0.9f);
+  const double far = 1.0e6 + 0.25;  // the quarter is lo for the pair, and exact in double
+  const std::size_t a = system.spawn({far, 2.0, -far}, {10.0f, 0.0f, 5.0f}, 7);
+  const std::size_t b = system.spawn({-far, 0.0, 3.0}, {0.0f, 1.0f, 0.0f}, 8);
+  const auto handle_b = system.handle(b);
+  // Spawned: the previous position is the stored position column, whole.
+  CHECK(system.previous_position(a).x == system.position_x()[a]);
+  CHECK(system.previous_position(a).z == system.position_z()[a]);
+
+  std::vector<E> before_x(system.position_x().begin(), system.position_x().end());
+  system.step(1.0f / 60.0f);
+  for (std::size_t i = 0; i < system.size(); ++i) {
+    CHECK(system.previous_position(i).x == before_x[i]);  // kept by the step, bit for bit
+    CHECK(system.interpolated_position(i, 0.0f).x == before_x[i]);
+    CHECK(system.interpolated_position(i, 1.0f).x == system.position_x()[i]);
+  }
+  // Halfway lies between, in the column's own precision.
+  const E middle = system.interpolated_position(a, 0.5f).x;
+  CHECK(middle > before_x[a]);
+  CHECK(middle < system.position_x()[a]);
+  if constexpr (std::is_same_v<E, double>) {
+    CHECK(middle == doctest::Approx(before_x[a] + (system.position_x()[a] - before_x[a]) * 0.5));
+  }
+
+  // A swap-remove carries the wide position (and, for the pair, its error term), the user
+  // column and the handle together.
+  const auto position_b = system.position(b);
+  system.kill(a);
+  const std::optional<std::size_t> moved = system.find(handle_b);
+  REQUIRE(moved.has_value());
+  CHECK(system.template column<OwnerTag>(*moved) == 8);
+  CHECK(system.position(*moved).x == position_b.x);
+  CHECK(system.position(*moved).z == position_b.z);
+
+  // set_position is a jump: the previous position follows it.
+  system.set_position(*moved, {far, far, far});
+  CHECK(system.position(*moved).x == far);
+  CHECK(system.previous_position(*moved).y == system.position_y()[*moved]);
 }
 
 // --- setting positions -------------------------------------------------------------------------

@@ -6,6 +6,7 @@
 
 #include <execution>
 #include <random>
+#include <vector>
 
 #include "system_support.hpp"
 
@@ -38,4 +39,26 @@ TEST_CASE_TEMPLATE("a parallel step equals the serial step", R, float, double) {
   }
   CHECK(same);
   CHECK(parallel.position(0).y != R(0));
+}
+
+TEST_CASE("a parallel step with an expiry callback reports what the serial one does") {
+  struct Id {};
+  using System = ParticleSystem<double, damping::None, position::Euler, features::Lifetime,
+                                features::Column<Id, int>>;
+  System serial(40'000);
+  for (int i = 0; i < 40'000; ++i) {
+    const std::size_t index = serial.spawn({double(i), 0, 0}, {0, 1, 0}, i);
+    serial.set_lifetime(index, 0.01 * (i % 7 + 1));
+  }
+  System parallel = serial;
+  std::vector<int> serial_seen, parallel_seen;
+  for (int step = 0; step < 4; ++step) {
+    serial.step(0.02, [&](std::size_t i) { serial_seen.push_back(serial.column<Id>(i)); });
+    pointmass::step(std::execution::par_unseq, parallel, 0.02, [&](std::size_t i) {
+      parallel_seen.push_back(parallel.column<Id>(i));
+    });
+  }
+  CHECK(serial_seen.size() > 30'000);
+  CHECK(serial_seen == parallel_seen);  // the same particles, in the same order
+  CHECK(serial.size() == parallel.size());
 }

@@ -113,11 +113,18 @@ class SystemKernel {
   ///   a  = acceleration + force * inverse_mass;  v1 = D::velocity(v0, a, t, f);
   ///   p1 = P::position(p0, v0, v1, a, t, f);     force = 0;  age += t
   /// on each of x, y and z (advance<D, P> in particle.hpp; with positions stored wider or
-  /// compensated, detail::advance_stored). A particle of inverse mass 0 does not move. Plain arithmetic on the arrays: runs on a GPU as it runs here (see
+  /// compensated, detail::advance_stored); with features::Interpolation, p0 is kept as the
+  /// previous position first. The user's columns are not touched. A particle of inverse mass
+  /// 0 does not move. Plain arithmetic on the arrays: runs on a GPU as it runs here (see
   /// docs/hardening.md for the compiler settings under which a device gives the same bits).
   POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void step_particle(
       const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
     const R t = parameters.duration;
+    if constexpr (Layout::has_interpolation) {  // the position before this step, for drawing
+      arrays.previous_position_x[i] = arrays.position_x[i];
+      arrays.previous_position_y[i] = arrays.position_y[i];
+      arrays.previous_position_z[i] = arrays.position_z[i];
+    }
     const auto factors = factors_of(arrays, i, parameters);
     R ax, ay, az;
     if constexpr (Layout::per_particle_acceleration) {

@@ -164,6 +164,44 @@ constexpr bool check_buffer(const char* function, const char* argument, std::siz
   return false;
 }
 
+/// A fraction of a step (interpolation's alpha): in [0, 1].
+template <Real R>
+constexpr bool check_fraction(const char* function, const char* argument, R value) {
+  if (!real_isnan(value) && value >= R(0) && value <= R(1)) return true;
+  report_scalar(function, argument, "in [0, 1]", value);
+  return false;
+}
+
+/// A count of at least `least` (a stride of 3 numbers, a cap of 1 step).
+constexpr bool check_at_least(const char* function, const char* argument, std::size_t value,
+                              std::size_t least) {
+  if (value >= least) return true;
+  report_scalar(function, argument,
+                least == 1 ? ">= 1" : least == 3 ? ">= 3 (x, y and z)" : ">= the least allowed",
+                value);
+  return false;
+}
+
+/// A caller's buffer of `available` elements, where `needed` are written.
+constexpr bool check_strided_buffer(const char* function, std::size_t available,
+                                    std::size_t needed) {
+  if (available >= needed) return true;
+  report_scalar(function, "out",
+                "a buffer of at least (size() - 1) * stride + 3 elements (its size is given)",
+                available);
+  return false;
+}
+
+/// Not inside an expiry callback, where removing particles is not allowed (the step is
+/// removing them); `index` is the particle the call would have removed.
+constexpr bool check_not_expiring(const char* function, bool expiring, std::size_t index) {
+  if (!expiring) return true;
+  report_scalar(function, "index",
+                "not removed during an expiry callback (spawn there; kill after the step)",
+                index);
+  return false;
+}
+
 /// A range of live particles: begin <= end <= size.
 constexpr bool check_range(const char* function, std::size_t begin, std::size_t end,
                            std::size_t size) {
