@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <span>
 #include <string>
@@ -220,6 +221,14 @@ TEST_CASE("the game features' arguments: removals in an expiry callback, buffers
             .find("copy_positions: argument 'out' = 5 must be a buffer of at least") !=
         std::string::npos);
   CHECK(buffer == std::vector<float>(5, -1.0f));
+  // A stride so large that (size() - 1) * stride + 3 wraps around to a small count: the
+  // needed size saturates instead, so the buffer is refused and nothing is written.
+  const std::size_t wrapping = std::numeric_limits<std::size_t>::max() - 1;  // 1 * it + 3 = 1
+  REQUIRE(system.size() == 2);
+  CHECK(invalid_argument_of([&] { system.copy_positions(std::span<float>(buffer), wrapping); })
+            .find("copy_positions: argument 'out' = 5 must be a buffer of at least") !=
+        std::string::npos);
+  CHECK(buffer == std::vector<float>(5, -1.0f));
   // Alpha outside [0, 1] (or NaN).
   for (const float alpha : {-0.5f, 1.5f, std::numeric_limits<float>::quiet_NaN()}) {
     CHECK(invalid_argument_of([&] { (void)system.interpolated_position(0, alpha); })
@@ -232,6 +241,25 @@ TEST_CASE("the game features' arguments: removals in an expiry callback, buffers
   CHECK(invalid_argument_of([&] { (void)system.handle(7); }).find("handle: argument 'index' = 7") !=
         std::string::npos);
   CHECK(same_particles(system, before));
+}
+
+TEST_CASE("spawn_handle: the new particle's handle, or a handle that finds nothing") {
+  using Tracked = ParticleSystem<float, damping::None, position::Euler, features::Handles>;
+  Tracked system(2);
+  const Tracked::Handle first = system.spawn_handle(Vector3<float>{1, 2, 3}, Vector3<float>{});
+  const Tracked::Handle second = system.spawn_handle(Vector3<float>{4, 5, 6}, Vector3<float>{});
+  REQUIRE(system.find(second).has_value());
+  CHECK(system.position(*system.find(second)).x == 4.0f);
+  system.kill(0);  // the second particle moves into index 0; the first is gone
+  CHECK_FALSE(system.contains(first));
+  CHECK(system.find(second) == std::optional<std::size_t>(0));
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  Tracked::Handle rejected = second;
+  CHECK(invalid_argument_of([&] {
+          rejected = system.spawn_handle(Vector3<float>{nan, 0, 0}, Vector3<float>{});
+        }).find("spawn: argument 'position'") != std::string::npos);
+  CHECK(system.size() == 1);
+  CHECK_FALSE(system.contains(Tracked::Handle{}));  // what a rejected spawn returns unchecked
 }
 
 TEST_CASE("FixedStep and the trajectory queries report bad arguments and keep their state") {

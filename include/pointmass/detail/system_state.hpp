@@ -1,0 +1,469 @@
+// SPDX-License-Identifier: BSL-1.0
+// pointmass/detail/system_state.hpp — what a ParticleSystem holds, and the mechanics behind
+// its public API.
+//
+// Owns: the system's data (the block of arrays, the uniform damping and acceleration, the
+// handle table, the walk direction and the expiry flag), its copy, move and swap; capacity
+// and growth; appending and swap-removing a particle (with its handle); reading and writing
+// a particle's position in the configuration's precision (precision.hpp), and its previous
+// position (features::Interpolation); the user columns at spawn; the walk of a step and the
+// expiry pass (with and without a callback); the copy-out of positions into a caller's
+// buffer. particle_system.hpp is the public face of this class and says what each call
+// means; here is how.
+//
+// Must not include: particle_system.hpp, parallel.hpp (this is below the public API).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include "../config.hpp"
+#include "../damping.hpp"
+#include "../features.hpp"
+#include "../particle.hpp"
+#include "../real.hpp"
+#include "../vector3.hpp"
+#include "handle_table.hpp"
+#include "soa_block.hpp"
+#include "system_kernel.hpp"
+#include "validate.hpp"
+
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
+
+template <class S, DampingPolicy D, class P, class... Features>
+class SystemState {
+ protected:
+  using R = real_of_t<S>;
+  using Layout = SystemLayout<S, D, Features...>;
+  using Kernel = SystemKernel<R, D, P, Layout>;
+  using Storage = typename Layout::position_storage;
+  using Block = SoaBlock<Layout>;
+  using Arrays = typename Layout::Arrays;
+  using StepParameters = typename Kernel::StepParameters;
+  using damping_state = typename D::template State<R>;
+  using position_value = typename Storage::value;
+  using user_columns = typename Layout::user_columns;
+  static constexpr std::size_t user_column_count = Layout::user_column_count;
+  static constexpr bool has_handles = Layout::has_handles;
+  static constexpr bool has_interpolation = Layout::has_interpolation;
+  static constexpr bool compensated = Layout::compensated_positions;
+  using Table = std::conditional_t<
+      has_handles,
+      HandleTable<typename handles_of<Features..., features::Handles>::type::generation_type>,
+      NoHandleTable>;
+  static_assert(((is_handles<Features>::value ? 1 : 0) + ... + 0) <= 1,
+                "ParticleSystem: at most one features::Handles / BasicHandles<G>");
+  template <std::size_t... I>
+  static constexpr bool unique_tags(std::index_sequence<I...>) {
+    return ((Layout::template user_index<typename std::tuple_element_t<I, user_columns>::tag> ==
+             I) &&
+            ...);
+  }
+  static_assert(unique_tags(std::make_index_sequence<user_column_count>{}),
+                "ParticleSystem: two features::Column<Tag, T> with the same Tag");
+
+  // --- data, copy, move, swap ----------------------------------------------------------------
+
+  SystemState() = default;
+  // A copy has the same particles, capacity and uniform values, and starts walking forwards.
+  SystemState(const SystemState& other)
+      : block_(other.block_.with_capacity(other.capacity())),
+        damping_(other.damping_),
+        acceleration_(other.acceleration_),
+        handles_(other.handles_) {}
+  SystemState(SystemState&& other) noexcept
+      : block_(std::move(other.block_)),
+        backward_(std::exchange(other.backward_, false)),
+        damping_(other.damping_),
+        acceleration_(other.acceleration_),
+        handles_(std::move(other.handles_)) {}
+  SystemState& operator=(const SystemState&) = delete;  // the system assigns by swap
+  SystemState& operator=(SystemState&&) = delete;
+  ~SystemState() = default;
+
+  void swap_state(SystemState& other) noexcept {
+    block_.swap(other.block_);
+    std::swap(backward_, other.backward_);
+    std::swap(damping_, other.damping_);
+    std::swap(acceleration_, other.acceleration_);
+    std::swap(handles_, other.handles_);
+  }
+
+  Block block_;
+  bool backward_ = false;  // the next step walks backwards (see Kernel::alternates)
+  bool expiring_ = false;  // inside an expiry callback (removals are refused)
+  [[no_unique_address]] damping_state damping_{};
+  Vector3<R> acceleration_{};
+  [[no_unique_address]] Table handles_{};
+
+  // --- size and capacity ---------------------------------------------------------------------
+
+  std::size_t size() const noexcept { return block_.size(); }
+  std::size_t capacity() const noexcept { return block_.capacity(); }
+  const Arrays& arrays() const noexcept { return block_.arrays(); }
+  void set_size(std::size_t size) noexcept { block_.arrays().size = size; }
+
+  static constexpr std::size_t max_size() noexcept {
+    if constexpr (has_handles) {  // slots and indices are 32-bit (handle_table.hpp)
+      return std::min(Block::max_capacity, Table::max_slots);
+    } else {
+      return Block::max_capacity;
+    }
+  }
+  [[noreturn]] static void throw_length_error(const char* function, std::size_t capacity) {
+#if POINTMASS_HAS_EXCEPTIONS
+    throw std::length_error(std::string("pointmass: ") + function + ": argument 'capacity' = " +
+                            std::to_string(capacity) + " must be <= max_size() = " +
+                            std::to_string(max_size()));
+#else
+    report_scalar(function, "capacity", "<= max_size()", capacity);
+    std::abort();
+#endif
+  }
+  void reserve_checked(std::size_t capacity) {
+    if (capacity <= this->capacity()) return;
+    if (capacity > max_size()) throw_length_error("reserve", capacity);
+    if constexpr (has_handles) handles_.reserve(capacity);
+    block_ = block_.with_capacity(capacity);
+  }
+  // Full: doubles the capacity (at least 16), up to max_size().
+  void grow() {
+    const std::size_t current = capacity();
+    if (current >= max_size()) throw_length_error("spawn", current + 1);
+    reserve_checked(current < 8                  ? 16
+                    : current > max_size() / 2 ? max_size()
+                                               : 2 * current);
+  }
+  // Room for `count` more particles at once (a burst): at least doubling, as grow() would.
+  void make_room(std::size_t count) {
+    if (count > max_size() - size()) throw_length_error("spawn_burst", size() + count);
+    if (size() + count > capacity()) {
+      reserve_checked(std::max(size() + count, std::min(2 * capacity(), max_size())));
+    }
+  }
+
+  bool valid_index([[maybe_unused]] const char* function,
+                   [[maybe_unused]] std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
+#if POINTMASS_HOST_CHECKS
+    return check_index(function, i, size());
+#else
+    return true;
+#endif
+  }
+
+  // --- adding and removing -------------------------------------------------------------------
+
+  // Appends a particle (input already validated): position, velocity, a default Particle's
+  // per-particle values, a handle slot, default user columns. Returns its index.
+  std::size_t append(const Vector3<position_value>& position, const Vector3<R>& velocity) {
+    if (size() == capacity()) grow();
+    const std::size_t i = size();
+    std::uint32_t slot = 0;
+    if constexpr (has_handles) {
+      slot = handles_.acquire(i);
+      if (slot == Table::none) throw_length_error("spawn", Table::max_slots + 1);
+    }
+    set_size(i + 1);
+    const Arrays& a = arrays();
+    store_position(i, position);
+    if constexpr (has_handles) a.handle_slot[i] = slot;
+    store(a.velocity_x, a.velocity_y, a.velocity_z, i, velocity);
+    if constexpr (Layout::per_particle_acceleration) {
+      store(a.acceleration_x, a.acceleration_y, a.acceleration_z, i, {});
+    }
+    if constexpr (Layout::has_forces) {
+      a.inverse_mass[i] = R(1);
+      store(a.force_x, a.force_y, a.force_z, i, {});
+    }
+    if constexpr (Layout::per_particle_damping) Layout::store_damping(a, i, damping_state{});
+    if constexpr (Layout::has_lifetime) {
+      a.age[i] = R(0);
+      a.lifetime[i] = real_infinity<R>;
+    }
+    store_user_columns(i, std::make_index_sequence<user_column_count>{});
+    return i;
+  }
+  // Particle i takes what `particle` has and the system stores per particle: its stored
+  // position bits (wide or compensated), acceleration, inverse mass, force and damping.
+  void store_particle(std::size_t i, const Particle<S, D, P>& particle) {
+    const Arrays& a = arrays();
+    if constexpr (!std::is_same_v<position_precision_of_t<S>, R>) {  // the stored numbers
+      store(a.position_x, a.position_y, a.position_z, i, particle.stored_position());
+      if constexpr (compensated) {
+        store(a.position_error_x, a.position_error_y, a.position_error_z, i,
+              particle.stored_position_error());
+      }
+      store_previous_position(i);
+    }
+    if constexpr (Layout::per_particle_acceleration) {
+      store(a.acceleration_x, a.acceleration_y, a.acceleration_z, i, particle.acceleration());
+    }
+    if constexpr (Layout::has_forces) {
+      a.inverse_mass[i] = particle.inverse_mass();
+      store(a.force_x, a.force_y, a.force_z, i, particle.force_accumulator());
+    }
+    if constexpr (Layout::per_particle_damping) {
+      Layout::store_damping(a, i, damping_state(particle.damping()));
+    }
+  }
+  // The user columns of particle i: the values given, or T{} for each when none are.
+  template <std::size_t... I, class... Values>
+  void store_user_columns(std::size_t i, std::index_sequence<I...>, const Values&... values) {
+    if constexpr (sizeof...(Values) == 0) {
+      ((Layout::template user_pointer<I>(arrays())[i] =
+            typename Layout::template user_element_t<I>{}),
+       ...);
+    } else {
+      ((Layout::template user_pointer<I>(arrays())[i] = values), ...);
+    }
+  }
+
+  // Swap-remove: the last particle (and its handle slot) moves into `index`.
+  void remove(std::size_t index) noexcept {
+    const std::size_t last = size() - 1;
+    if constexpr (has_handles) handles_.release(arrays().handle_slot[index]);
+    if (index != last) {
+      Block::move_particle(arrays(), last, index);
+      if constexpr (has_handles) handles_.relocate(arrays().handle_slot[index], index);
+    }
+    set_size(last);
+  }
+  void remove_all() noexcept {
+    if constexpr (has_handles) {
+      for (std::size_t i = 0; i < size(); ++i) handles_.release(arrays().handle_slot[i]);
+    }
+    set_size(0);
+  }
+  template <class Predicate>
+  std::size_t remove_if(Predicate& predicate) {
+    const std::size_t before = size();
+    std::size_t i = 0;
+    while (i < size()) {
+      if (predicate(i)) {
+        remove(i);
+      } else {
+        ++i;
+      }
+    }
+    return before - size();
+  }
+
+  // --- values by index -----------------------------------------------------------------------
+
+  template <class T>
+  static void store(T* x, T* y, T* z, std::size_t i, const Vector3<T>& value) noexcept {
+    x[i] = value.x;
+    y[i] = value.y;
+    z[i] = value.z;
+  }
+  template <class T>
+  static Vector3<T> load(const T* x, const T* y, const T* z, std::size_t i) noexcept {
+    return {x[i], y[i], z[i]};
+  }
+
+  // A finite position (for Compensated<R>, also within R's range).
+  static bool valid_position(const char* function, const Vector3<position_value>& position) {
+    if (!check_finite(function, "position", position)) return false;
+    if constexpr (compensated) {
+      return check_representable(function, "position", position, hi_of(position));
+    } else {
+      return true;
+    }
+  }
+  static Vector3<R> hi_of(const Vector3<position_value>& p) noexcept {
+    return {Storage::element_of(p.x), Storage::element_of(p.y), Storage::element_of(p.z)};
+  }
+  void store_position(std::size_t i, const Vector3<position_value>& position) noexcept {
+    const Arrays& a = arrays();
+    if constexpr (compensated) {
+      store(a.position_x, a.position_y, a.position_z, i, hi_of(position));
+      store(a.position_error_x, a.position_error_y, a.position_error_z, i,
+            Vector3<R>{Storage::error_of(position.x), Storage::error_of(position.y),
+                       Storage::error_of(position.z)});
+    } else {
+      store(a.position_x, a.position_y, a.position_z, i, position);
+    }
+    store_previous_position(i);  // a jump, not a motion to draw
+  }
+  // The previous position (features::Interpolation) := the stored position column.
+  void store_previous_position([[maybe_unused]] std::size_t i) noexcept {
+    if constexpr (has_interpolation) {
+      const Arrays& a = arrays();
+      a.previous_position_x[i] = a.position_x[i];
+      a.previous_position_y[i] = a.position_y[i];
+      a.previous_position_z[i] = a.position_z[i];
+    }
+  }
+  Vector3<position_value> load_position(std::size_t i) const noexcept {
+    const Arrays& a = arrays();
+    if constexpr (compensated) {
+      return {Storage::value_of(a.position_x[i], a.position_error_x[i]),
+              Storage::value_of(a.position_y[i], a.position_error_y[i]),
+              Storage::value_of(a.position_z[i], a.position_error_z[i])};
+    } else {
+      return load(a.position_x, a.position_y, a.position_z, i);
+    }
+  }
+  static Vector3<float> relative(const Arrays& a, std::size_t i,
+                                 const Vector3<position_value>& origin) noexcept {
+    if constexpr (compensated) {
+      return {Storage::relative(a.position_x[i], a.position_error_x[i], origin.x),
+              Storage::relative(a.position_y[i], a.position_error_y[i], origin.y),
+              Storage::relative(a.position_z[i], a.position_error_z[i], origin.z)};
+    } else {
+      return {Storage::relative(a.position_x[i], origin.x),
+              Storage::relative(a.position_y[i], origin.y),
+              Storage::relative(a.position_z[i], origin.z)};
+    }
+  }
+
+  // --- the step ------------------------------------------------------------------------------
+
+  StepParameters step_parameters(R duration) const noexcept {
+    StepParameters parameters{};
+    parameters.duration = duration;
+    if constexpr (!Layout::per_particle_damping) {
+      parameters.factors = D::factors(damping_, duration);
+    }
+    parameters.acceleration = acceleration_;
+    return parameters;
+  }
+  bool begin_step(R duration) const {
+#if POINTMASS_HOST_CHECKS
+    if (!check_duration("step", duration)) return false;
+#endif
+    return !real_equal(duration, R(0)) && size() != 0;
+  }
+  // Steps every particle, walking in the direction due; false when there was nothing to do.
+  bool walk(R duration) {
+    if (!begin_step(duration)) return false;
+    const StepParameters parameters = step_parameters(duration);
+    (backward_ ? Kernel::step_range_backward : Kernel::step_range)(arrays(), 0, size(),
+                                                                   parameters);
+    backward_ = !backward_ && Kernel::alternates(size());
+    return true;
+  }
+
+  // The expiry pass without a callback.
+  struct NoCallback {
+    void operator()(std::size_t) const noexcept {}
+  };
+  // Marks the system as inside an expiry callback while it lives.
+  struct ExpiringScope {
+    bool& flag;
+    explicit ExpiringScope(bool& expiring) noexcept : flag(expiring) { flag = true; }
+    ExpiringScope(const ExpiringScope&) = delete;
+    ExpiringScope& operator=(const ExpiringScope&) = delete;
+    ~ExpiringScope() { flag = false; }
+  };
+  POINTMASS_HD static constexpr bool expired(R age, R lifetime) noexcept {
+    return (age >= lifetime) & (lifetime < real_infinity<R>);
+  }
+  // kill_if's order and result, but a step expires few particles: a block of vector_block
+  // particles none of which has expired (a test that vectorises) is skipped whole; only a
+  // block with an expiry is walked one particle at a time.
+  template <class OnExpire>
+  void expire(OnExpire& on_expire) {
+    if constexpr (Layout::has_lifetime) {
+      constexpr std::size_t block = Kernel::vector_block;
+      std::size_t i = 0;
+      while (i < size()) {
+        const R* age = arrays().age;
+        const R* lifetime = arrays().lifetime;
+        if (i % block == 0 && i + block <= size()) {
+          bool any_expired = false;
+          for (std::size_t k = i; k < i + block; ++k) any_expired |= expired(age[k], lifetime[k]);
+          if (!any_expired) {
+            i += block;
+            continue;
+          }
+        }
+        if (expired(age[i], lifetime[i])) {
+          if constexpr (!std::is_same_v<std::remove_cvref_t<OnExpire>, NoCallback>) {
+            const ExpiringScope scope(expiring_);
+            on_expire(std::as_const(i));
+          }
+          remove(i);
+        } else {
+          ++i;
+        }
+      }
+    }
+  }
+
+  // --- copy-out ------------------------------------------------------------------------------
+
+  // Calls store(i, x, y, z) for particles [first, last) with the position at the fraction
+  // alpha of the last step (alpha 1: the current position; without Interpolation always).
+  // The choice of alpha is made once, outside the loop, so 0 and 1 copy bits.
+  template <class Store>
+  void for_each_output_position(R alpha, std::size_t first, std::size_t last,
+                                Store&& store_one) const {
+    const Arrays& a = arrays();
+    bool current = true;
+    if constexpr (has_interpolation) current = real_equal(alpha, R(1));
+    if (current) {
+      for (std::size_t i = first; i < last; ++i) {
+        store_one(i, a.position_x[i], a.position_y[i], a.position_z[i]);
+      }
+      return;
+    }
+    if constexpr (has_interpolation) {
+      if (real_equal(alpha, R(0))) {
+        for (std::size_t i = first; i < last; ++i) {
+          store_one(i, a.previous_position_x[i], a.previous_position_y[i],
+                    a.previous_position_z[i]);
+        }
+        return;
+      }
+      using E = typename Layout::position_element;
+      const E fraction = static_cast<E>(alpha);
+      for (std::size_t i = first; i < last; ++i) {
+        const E px = a.previous_position_x[i];
+        const E py = a.previous_position_y[i];
+        const E pz = a.previous_position_z[i];
+        store_one(i, px + (a.position_x[i] - px) * fraction,
+                  py + (a.position_y[i] - py) * fraction, pz + (a.position_z[i] - pz) * fraction);
+      }
+    }
+  }
+  template <class T>
+  void copy_strided(const char* function, R alpha, std::span<T> out, std::size_t stride) const {
+    if (!check_at_least(function, "stride", stride, 3)) return;
+    if (size() == 0) return;
+    // (size() - 1) * stride + 3 elements, saturated: a stride too large for any buffer must
+    // not wrap around to a small count.
+    const std::size_t rows = size() - 1;
+    constexpr std::size_t most = static_cast<std::size_t>(-1);
+    const std::size_t needed = rows != 0 && stride > (most - 3) / rows ? most : rows * stride + 3;
+    if (!check_strided_buffer(function, out.size(), needed)) return;
+    T* data = out.data();
+    for_each_output_position(alpha, 0, size(), [&](std::size_t i, auto x, auto y, auto z) {
+      T* vertex = data + i * stride;
+      vertex[0] = static_cast<T>(x);
+      vertex[1] = static_cast<T>(y);
+      vertex[2] = static_cast<T>(z);
+    });
+  }
+  template <class V>
+  void copy_vectors(const char* function, R alpha, std::span<V> out) const {
+    if (!check_buffer(function, "out", out.size(), size())) return;
+    V* data = out.data();
+    for_each_output_position(alpha, 0, size(), [&](std::size_t i, auto x, auto y, auto z) {
+      using T = std::remove_cvref_t<decltype(data[i].x)>;
+      data[i].x = static_cast<T>(x);
+      data[i].y = static_cast<T>(y);
+      data[i].z = static_cast<T>(z);
+    });
+  }
+};
+
+}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail
