@@ -5,7 +5,7 @@
 # plots docs/images/pareto-ballistic.svg, pareto-spring.svg and pareto-far.svg and the
 # section of docs/performance.md between <!-- sweep:begin --> and <!-- sweep:end -->.
 #
-#   scripts/sweep.sh [repetitions]      (default 5; about 3 minutes on 2 cores)
+#   scripts/sweep.sh [repetitions]      (default 5; about 2 minutes on 2 cores)
 #   SWEEP_PNG=/tmp scripts/sweep.sh     also writes PNG copies of the plots there
 #   SWEEP_REDRAW=1 scripts/sweep.sh     redraws plots and tables from the last run's files
 #
