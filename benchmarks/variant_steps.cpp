@@ -4,7 +4,10 @@
 // accuracy comparison and draws docs/images/pareto-*.svg.
 //
 // Benchmarks (names as reported; VARIANT is "float PerSecond + Euler" and so on, the names
-// the accuracy comparison prints):
+// the accuracy comparison prints). The variants: float and double with every policy pair,
+// and float arithmetic with wide positions (Precision<float, double>, "float/double-pos",
+// and Precision<float, Compensated<float>>, "float/compensated-pos") with the pairs
+// accuracy::for_each_wide_combination names (PerSecond + Euler, Exact + Exact):
 //   Particle/ballistic/VARIANT   64 Particles (the four ballistic shots, 16 of each) fly the
 //                                scene's 5 s at 1/60 s: each frame steps every particle once
 //   Particle/spring/VARIANT      64 Particles (the undamped and the damped spring, 32 of
@@ -70,6 +73,15 @@ const char* real_name() {
   return sizeof(R) == sizeof(float) ? "float" : "double";
 }
 
+/// The position a spring force is computed from, in the arithmetic's Real: the position itself
+/// when it is stored as that Real, else the float offset from the spring's anchor (the
+/// origin) that position_relative_to computes from the whole stored position.
+template <class S, class D, class P>
+Vector3<real_of_t<S>> spring_position(const Particle<S, D, P>& particle) {
+  if constexpr (Particle<S, D, P>::plain_position) return particle.position();
+  else return particle.position_relative_to({});
+}
+
 constexpr std::size_t copies_per_scene = 16;    // ballistic: 4 shots x 16 = 64 particles
 constexpr std::size_t copies_per_spring = 32;   // spring: 2 scenes x 32 = 64 particles
 constexpr std::size_t system_particles = 1024;  // sparks
@@ -78,24 +90,26 @@ constexpr std::size_t system_particles = 1024;  // sparks
 
 /// The particles of a scene at launch, the per-particle friction (spring scenes) and the
 /// number of frames of one flight at 1/60 s.
-template <Real R, class D, class P>
+template <class S, class D, class P>
 struct ScalarScene {
-  std::vector<Particle<R, D, P>> launched;
+  using R = real_of_t<S>;
+  std::vector<Particle<S, D, P>> launched;
   std::vector<R> friction;
   R stiffness = R(0);
   long frames = 0;
 };
 
-template <Real R, class D, class P>
-ScalarScene<R, D, P> scalar_scene(bool spring) {
-  ScalarScene<R, D, P> scene;
+template <class S, class D, class P>
+ScalarScene<S, D, P> scalar_scene(bool spring) {
+  using R = real_of_t<S>;
+  ScalarScene<S, D, P> scene;
   const auto scenes = spring ? std::vector<accuracy::Scene>{accuracy::spring(false, 10),
                                                             accuracy::spring(true, 10)}
                              : accuracy::ballistic_scenes();
   const std::size_t copies = spring ? copies_per_spring : copies_per_scene;
   for (std::size_t copy = 0; copy < copies; ++copy) {
     for (const auto& s : scenes) {
-      scene.launched.push_back(accuracy::make_particle<R, D, P>(s, nominal_frame_time));
+      scene.launched.push_back(accuracy::make_particle<S, D, P>(s, nominal_frame_time));
       scene.friction.push_back(static_cast<R>(s.friction));
       scene.stiffness = static_cast<R>(s.stiffness);
       scene.frames = accuracy::steps_for(s, nominal_frame_time);
@@ -105,14 +119,15 @@ ScalarScene<R, D, P> scalar_scene(bool spring) {
 }
 
 /// One flight: every frame, each particle gets its spring force (if any) and one step.
-template <bool Spring, Real R, class D, class P>
-void fly(std::vector<Particle<R, D, P>>& particles, const ScalarScene<R, D, P>& scene, R t) {
-  const R minus_stiffness = -scene.stiffness;
+template <bool Spring, class S, class D, class P>
+void fly(std::vector<Particle<S, D, P>>& particles, const ScalarScene<S, D, P>& scene,
+         real_of_t<S> t) {
+  const real_of_t<S> minus_stiffness = -scene.stiffness;
   for (long frame = 0; frame < scene.frames; ++frame) {
     for (std::size_t i = 0; i < particles.size(); ++i) {
       auto& particle = particles[i];
       if constexpr (Spring) {
-        particle.add_force(particle.position() * minus_stiffness +
+        particle.add_force(spring_position(particle) * minus_stiffness +
                            particle.velocity() * -scene.friction[i]);
       }
       particle.integrate(t);
@@ -120,9 +135,10 @@ void fly(std::vector<Particle<R, D, P>>& particles, const ScalarScene<R, D, P>& 
   }
 }
 
-template <Real R, class D, class P, bool Spring>
+template <class S, class D, class P, bool Spring>
 void BM_Particle(benchmark::State& state) {
-  const auto scene = scalar_scene<R, D, P>(Spring);
+  using R = real_of_t<S>;
+  const auto scene = scalar_scene<S, D, P>(Spring);
   auto particles = scene.launched;
   const R t = frame_time<R>();
   for (auto _ : state) {
@@ -136,17 +152,19 @@ void BM_Particle(benchmark::State& state) {
 
 // --- ParticleSystem ----------------------------------------------------------------------
 
-template <Real R, class D, class P>
-ParticleSystem<R, D, P> sparks() {
-  ParticleSystem<R, D, P> system(system_particles);
+template <class S, class D, class P>
+ParticleSystem<S, D, P> sparks() {
+  using R = real_of_t<S>;
+  ParticleSystem<S, D, P> system(system_particles);
   const auto& shots = scenes::ballistic_shots<R>;
   for (std::size_t i = 0; i < system_particles; ++i) {
     const auto& shot = shots[i % shots.size()];
     const R spread = R(1) + static_cast<R>(i) / R(system_particles);
-    system.spawn(scenes::ballistic_origin<R>, shot.velocity * spread);
+    system.spawn(scenes::ballistic_origin<typename ParticleSystem<S, D, P>::position_value>,
+                 shot.velocity * spread);
   }
   system.set_acceleration({R(0), R(-9.807), R(0)});
-  if constexpr (ParticleSystem<R, D, P>::stores_damping) {
+  if constexpr (ParticleSystem<S, D, P>::stores_damping) {
     const double d = std::is_same_v<D, damping::PerFrame> ? std::pow(0.99, nominal_frame_time)
                                                           : 0.99;
     system.set_damping(static_cast<R>(d));
@@ -156,19 +174,28 @@ ParticleSystem<R, D, P> sparks() {
 
 constexpr long system_frames = 300;
 
-template <Real R, class D, class P>
-void restore(ParticleSystem<R, D, P>& system, const ParticleSystem<R, D, P>& launched) {
+template <class S, class D, class P>
+void restore(ParticleSystem<S, D, P>& system, const ParticleSystem<S, D, P>& launched) {
   std::ranges::copy(launched.position_x(), system.position_x().begin());
   std::ranges::copy(launched.position_y(), system.position_y().begin());
   std::ranges::copy(launched.position_z(), system.position_z().begin());
+  if constexpr (ParticleSystem<S, D, P>::template stores<Column::position_error_x>) {
+    std::ranges::copy(launched.template column<Column::position_error_x>(),
+                      system.template column<Column::position_error_x>().begin());
+    std::ranges::copy(launched.template column<Column::position_error_y>(),
+                      system.template column<Column::position_error_y>().begin());
+    std::ranges::copy(launched.template column<Column::position_error_z>(),
+                      system.template column<Column::position_error_z>().begin());
+  }
   std::ranges::copy(launched.velocity_x(), system.velocity_x().begin());
   std::ranges::copy(launched.velocity_y(), system.velocity_y().begin());
   std::ranges::copy(launched.velocity_z(), system.velocity_z().begin());
 }
 
-template <Real R, class D, class P>
+template <class S, class D, class P>
 void BM_System(benchmark::State& state) {
-  const auto launched = sparks<R, D, P>();
+  using R = real_of_t<S>;
+  const auto launched = sparks<S, D, P>();
   auto system = launched;
   const R t = frame_time<R>();
   for (auto _ : state) {
@@ -351,13 +378,14 @@ void fail(const std::string& what) {
 }
 
 /// Every particle of every benchmarked loop moves in one flight.
-template <Real R, class D, class P>
+template <class S, class D, class P>
 void check_variant() {
-  const std::string name = std::string(real_name<R>()) + " " + accuracy::combination_name<D, P>();
+  using R = real_of_t<S>;
+  const std::string name = accuracy::variant_name<S, D, P>();
   const R t = frame_time<R>();
   if (!(t > R(0))) fail(std::string("the ") + real_name<R>() + " frame time is not positive");
   for (const bool spring : {false, true}) {
-    const auto scene = scalar_scene<R, D, P>(spring);
+    const auto scene = scalar_scene<S, D, P>(spring);
     auto particles = scene.launched;
     if (spring) fly<true>(particles, scene, t);
     else fly<false>(particles, scene, t);
@@ -368,7 +396,7 @@ void check_variant() {
       }
     }
   }
-  const auto launched = sparks<R, D, P>();
+  const auto launched = sparks<S, D, P>();
   auto system = launched;
   system.step(t);
   for (std::size_t i = 0; i < system.size(); ++i) {
@@ -422,15 +450,23 @@ void check_hand() {
 
 // --- registration ------------------------------------------------------------------------
 
+/// Checks and registers the three benchmarks of variant (S, D, P).
+template <class S>
+struct RegisterVariant {
+  template <class D, class P>
+  void operator()() const {
+    check_variant<S, D, P>();
+    const std::string name = accuracy::variant_name<S, D, P>();
+    benchmark::RegisterBenchmark(("Particle/ballistic/" + name).c_str(), BM_Particle<S, D, P, false>);
+    benchmark::RegisterBenchmark(("Particle/spring/" + name).c_str(), BM_Particle<S, D, P, true>);
+    benchmark::RegisterBenchmark(("ParticleSystem/sparks/" + name).c_str(), BM_System<S, D, P>);
+  }
+};
+
+/// Every policy pair of R, and R's hand-written baselines.
 template <Real R>
 void register_variants() {
-  accuracy::for_each_combination([]<class D, class P>() {
-    check_variant<R, D, P>();
-    const std::string name = std::string(real_name<R>()) + " " + accuracy::combination_name<D, P>();
-    benchmark::RegisterBenchmark(("Particle/ballistic/" + name).c_str(), BM_Particle<R, D, P, false>);
-    benchmark::RegisterBenchmark(("Particle/spring/" + name).c_str(), BM_Particle<R, D, P, true>);
-    benchmark::RegisterBenchmark(("ParticleSystem/sparks/" + name).c_str(), BM_System<R, D, P>);
-  });
+  accuracy::for_each_combination(RegisterVariant<R>{});
   check_hand<R>();
   const std::string real = real_name<R>();
   benchmark::RegisterBenchmark(("hand-written/ballistic/" + real).c_str(), BM_Hand<R, false>);
@@ -446,6 +482,8 @@ int main(int argc, char** argv) {
   frame_time_source = nominal_frame_time * (argc > 0 ? 1.0 : 2.0);
   register_variants<float>();
   register_variants<double>();
+  accuracy::for_each_wide_combination(RegisterVariant<accuracy::FloatWithDoublePositions>{});
+  accuracy::for_each_wide_combination(RegisterVariant<accuracy::FloatWithCompensatedPositions>{});
   if (failed) return 1;
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

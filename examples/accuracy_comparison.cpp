@@ -1,8 +1,10 @@
 // accuracy_comparison — every compile-time variant on the same scenes: how far from the true
 // motion it goes, and what a step costs. The README's main command (scripts/demo.sh).
 //
-// Each variant (Real x damping x position policy) flies the scene at each frame time.
-// Printed:
+// Each variant (precision x damping x position policy) flies the scene at each frame time:
+// float and double with every policy pair, and float arithmetic with wide positions
+// (Precision<float, double>, "float/double-pos"; Precision<float, Compensated<float>>,
+// "float/compensated-pos") with PerSecond + Euler and Exact + Exact. Printed:
 //   1. per ballistic shot, the error of every policy combination at 1/30 .. 1/240 s against
 //      the continuous model it approximates, and the observed order as the frame time halves
 //      (the same tables as docs/accuracy.md);
@@ -13,12 +15,17 @@
 //      times the steps the span takes at that frame time: what a user pays for that error);
 //      and whether the row is on the Pareto front of error against that time (no other row
 //      simulates the span both faster and more accurately). A variant that ignores the drag
-//      is charged for it.
+//      is charged for it;
+//   3. with --scene far (the ballistic shots launched from (1e6, 1e6 + 1.5, 1e6) m, errors taken
+//      relative to the launch frame, against the same reference): per wide pair and frame
+//      time, float's error near the origin and each precision's error far from it, and the
+//      check that the wide positions keep, far from the origin, the error float has near it
+//      (within a factor far_tolerance) while float's own error there is far larger.
 // Times are measured here with a steady clock (median of repetitions): rough on a busy
 // machine. `--times FILE` takes them instead from a CSV "variant,ns_per_step" (what
 // scripts/sweep.sh makes from the Google Benchmark run, for the plot in docs/performance.md).
 //
-//   accuracy_comparison [--scene ballistic|spring] [--frame-times 30,60,120,240]
+//   accuracy_comparison [--scene ballistic|spring|far] [--frame-times 30,60,120,240]
 //                       [--times FILE] [--csv FILE] [--summary-only] [--quick]
 #include <algorithm>
 #include <chrono>
@@ -28,6 +35,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -36,7 +44,6 @@
 #include "accuracy.hpp"
 
 namespace accuracy = pointmass::accuracy;
-using pointmass::Real;
 
 namespace {
 
@@ -60,6 +67,7 @@ struct Row {
 
 std::vector<accuracy::Scene> scenes_named(const std::string& name) {
   if (name == "spring") return {accuracy::spring(false, 10), accuracy::spring(true, 10)};
+  if (name == "far") return accuracy::far_ballistic_scenes();
   return accuracy::ballistic_scenes();
 }
 
@@ -70,14 +78,10 @@ double scenes_span(const std::vector<accuracy::Scene>& scenes) {
   return span;
 }
 
-template <Real R>
-const char* real_name() {
-  return sizeof(R) == sizeof(float) ? "float" : "double";
-}
-
-/// Median nanoseconds per particle-step of variant (R, D, P) on the scenes at 1/60 s.
-template <Real R, class D, class P>
+/// Median nanoseconds per particle-step of variant (S, D, P) on the scenes at 1/60 s.
+template <class S, class D, class P>
 double measure_time(const std::vector<accuracy::Scene>& scenes, int repetitions) {
+  using R = pointmass::real_of_t<S>;
   const double h = 1.0 / 60;
   const R frame = static_cast<R>(h);
   std::vector<double> samples;
@@ -86,7 +90,7 @@ double measure_time(const std::vector<accuracy::Scene>& scenes, int repetitions)
     long steps_done = 0;
     const auto start = std::chrono::steady_clock::now();
     for (const auto& s : scenes) {
-      auto particle = accuracy::make_particle<R, D, P>(s, h);
+      auto particle = accuracy::make_particle<S, D, P>(s, h);
       const long steps = accuracy::steps_for(s, h);
       for (long n = 0; n < steps; ++n) accuracy::step(particle, s, frame);
       sink += static_cast<double>(particle.position().z);
@@ -102,31 +106,91 @@ double measure_time(const std::vector<accuracy::Scene>& scenes, int repetitions)
   return *middle;
 }
 
-template <Real R>
+/// The largest position error of variant (S, D, P) over the scenes at frame time h, m,
+/// against the scene's own motion (with its drag), whatever the variant models: a variant
+/// that ignores the drag (damping::None) is charged for it.
+template <class S, class D, class P>
+double largest_error(const std::vector<accuracy::Scene>& scenes, double h) {
+  double error = 0;
+  for (const auto& s : scenes) {
+    const long steps = accuracy::steps_for(s, h);
+    const auto reference = accuracy::reference_trajectory<pointmass::damping::PerSecond>(s, h, steps);
+    const auto flown = accuracy::simulate<S, D, P>(s, h, steps);
+    error = std::max(error, accuracy::global_error(flown, reference).position);
+  }
+  return error;
+}
+
+/// The rows of precision S with the policy pairs for_each names (accuracy::
+/// for_each_combination or for_each_wide_combination).
+template <class S, class ForEach>
 void measure_variants(const Options& options, const std::vector<accuracy::Scene>& scenes,
-                      std::vector<Row>& rows) {
-  accuracy::for_each_combination([&]<class D, class P>() {
-    const std::string variant =
-        std::string(real_name<R>()) + " " + accuracy::combination_name<D, P>();
+                      std::vector<Row>& rows, ForEach for_each) {
+  for_each([&]<class D, class P>() {
+    const std::string variant = accuracy::variant_name<S, D, P>();
     const auto given = options.times.find(variant);
     const double ns = given != options.times.end()
                           ? given->second
-                          : measure_time<R, D, P>(scenes, options.repetitions);
+                          : measure_time<S, D, P>(scenes, options.repetitions);
     for (const double rate : options.frame_rates) {
       const double h = 1 / rate;
-      double error = 0;
-      for (const auto& s : scenes) {
-        const long steps = accuracy::steps_for(s, h);
-        // The scene's own motion (with its drag), whatever the variant models: a variant
-        // that ignores the drag (damping::None) is charged for it.
-        const auto reference = accuracy::reference_trajectory<pointmass::damping::PerSecond>(s, h, steps);
-        const auto flown = accuracy::simulate<R, D, P>(s, h, steps);
-        error = std::max(error, accuracy::global_error(flown, reference).position);
-      }
+      const double error = largest_error<S, D, P>(scenes, h);
       const double steps = static_cast<double>(std::lround(scenes_span(scenes) / h));
       rows.push_back({variant, h, error, ns, ns * steps / 1000});
     }
   });
+}
+
+/// Far from the origin, the wide positions must keep the error float has near it: at most
+/// far_tolerance times float's error near the origin (the same float velocities, only the
+/// position's roundings differ: float's at 1.5 to a few hundred metres, the wide storage's
+/// at 1e6 m)...
+constexpr double far_tolerance = 2;
+/// ...while float's own error far from the origin, at the finest frame time, is at least
+/// far_float_excess times its error near it (so the scene shows what the storage is for).
+constexpr double far_float_excess = 10;
+
+/// Prints, per wide pair and frame time, float's error near the origin and each precision's
+/// error far from it; returns false when a wide precision exceeds far_tolerance times float's
+/// near error, or float far from the origin does not exceed far_float_excess times it at the
+/// finest frame time.
+bool report_far(const Options& options) {
+  const auto near = accuracy::ballistic_scenes();
+  const auto far = accuracy::far_ballistic_scenes();
+  bool kept = true, float_worse = true;
+  double least_excess = std::numeric_limits<double>::infinity();
+  const double finest = *std::max_element(options.frame_rates.begin(), options.frame_rates.end());
+  std::printf("## far from the origin: the shots from (%.0e, %.0e + 1.5, %.0e) m, errors relative\n"
+              "## to the launch frame (m), against float's near the origin\n\n",
+              far.front().offset.x, far.front().offset.y, far.front().offset.z);
+  std::printf("%-20s %7s %11s %11s %11s %11s %11s  %s\n", "pair", "frame", "float near",
+              "float far", "double-pos", "compensated", "double far", "wide / float near");
+  accuracy::for_each_wide_combination([&]<class D, class P>() {
+    for (const double rate : options.frame_rates) {
+      const double h = 1 / rate;
+      const double float_near = largest_error<float, D, P>(near, h);
+      const double float_far = largest_error<float, D, P>(far, h);
+      const double wide = largest_error<accuracy::FloatWithDoublePositions, D, P>(far, h);
+      const double pair = largest_error<accuracy::FloatWithCompensatedPositions, D, P>(far, h);
+      const double twin = largest_error<double, D, P>(far, h);
+      const double ratio = std::max(wide, pair) / float_near;
+      const bool row_kept = ratio <= far_tolerance;
+      const bool row_worse = rate != finest || float_far >= far_float_excess * float_near;
+      if (rate == finest) least_excess = std::min(least_excess, float_far / float_near);
+      kept = kept && row_kept;
+      float_worse = float_worse && row_worse;
+      std::printf("%-20s   1/%-4.0f %11.3e %11.3e %11.3e %11.3e %11.3e  %.3f%s%s\n",
+                  accuracy::combination_name<D, P>().c_str(), rate, float_near, float_far, wide,
+                  pair, twin, ratio, row_kept ? "" : "  <- NOT KEPT",
+                  row_worse ? "" : "  <- float NOT worse far away");
+    }
+  });
+  std::printf("\nfar from the origin, the wide positions %s float's near-origin error (within "
+              "a factor %g)\n",
+              kept ? "keep" : "do NOT keep", far_tolerance);
+  std::printf("float far from the origin: %.0f times its near-origin error at 1/%.0f s (%s %g)\n\n",
+              least_excess, finest, float_worse ? "at least" : "NOT at least", far_float_excess);
+  return kept && float_worse;
 }
 
 void mark_pareto_front(std::vector<Row>& rows) {
@@ -152,7 +216,7 @@ bool read_times(const char* path, std::map<std::string, double>& times) {
 
 int usage(const char* program) {
   std::fprintf(stderr,
-               "usage: %s [--scene ballistic|spring] [--frame-times 30,60,...] [--times FILE]\n"
+               "usage: %s [--scene ballistic|spring|far] [--frame-times 30,60,...] [--times FILE]\n"
                "          [--csv FILE] [--summary-only] [--quick]\n",
                program);
   return 2;
@@ -167,7 +231,9 @@ int main(int argc, char** argv) {
     const bool has_value = i + 1 < argc;
     if (argument == "--scene" && has_value) {
       options.scene = argv[++i];
-      if (options.scene != "ballistic" && options.scene != "spring") return usage(argv[0]);
+      if (options.scene != "ballistic" && options.scene != "spring" && options.scene != "far") {
+        return usage(argv[0]);
+      }
     } else if (argument == "--frame-times" && has_value) {
       options.frame_rates.clear();
       std::stringstream list(argv[++i]);
@@ -204,18 +270,24 @@ int main(int argc, char** argv) {
     }
   }
 
+  const bool far_kept = options.scene != "far" || report_far(options);
+
   std::vector<Row> rows;
-  measure_variants<float>(options, scenes, rows);
-  measure_variants<double>(options, scenes, rows);
+  const auto every_pair = [](auto&& f) { accuracy::for_each_combination(f); };
+  const auto wide_pairs = [](auto&& f) { accuracy::for_each_wide_combination(f); };
+  measure_variants<float>(options, scenes, rows, every_pair);
+  measure_variants<double>(options, scenes, rows, every_pair);
+  measure_variants<accuracy::FloatWithDoublePositions>(options, scenes, rows, wide_pairs);
+  measure_variants<accuracy::FloatWithCompensatedPositions>(options, scenes, rows, wide_pairs);
   mark_pareto_front(rows);
 
   std::printf("## every variant: error (largest over the %s scenes, m), time per particle-step,\n"
               "## and time to simulate the scene's span (%g s) with one particle\n\n",
               options.scene.c_str(), scenes_span(scenes));
-  std::printf("%-38s %8s %11s %9s %11s  %s\n", "variant (Real Damping + Position)", "frame",
+  std::printf("%-40s %8s %11s %9s %11s  %s\n", "variant (precision Damping + Position)", "frame",
               "error (m)", "ns/step", "us/span", "front");
   for (const auto& row : rows) {
-    std::printf("%-38s   1/%-4.0f %11.3e %9.2f %11.2f  %s\n", row.variant.c_str(),
+    std::printf("%-40s   1/%-4.0f %11.3e %9.2f %11.2f  %s\n", row.variant.c_str(),
                 1 / row.frame_time, row.error, row.ns_per_step, row.us_per_span,
                 row.on_front ? "*" : "");
   }
@@ -240,5 +312,5 @@ int main(int argc, char** argv) {
     }
     std::fclose(csv);
   }
-  return 0;
+  return far_kept ? 0 : 1;
 }

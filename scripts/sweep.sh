@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Work-precision diagrams (time to simulate a scene's span against error), for every
-# compile-time variant: regenerates the plots
-# docs/images/pareto-ballistic.svg and docs/images/pareto-spring.svg and the section of
-# docs/performance.md between <!-- sweep:begin --> and <!-- sweep:end -->.
+# compile-time variant (float and double with every policy pair; float arithmetic with
+# double or compensated positions with PerSecond + Euler and Exact + Exact): regenerates the
+# plots docs/images/pareto-ballistic.svg, pareto-spring.svg and pareto-far.svg and the
+# section of docs/performance.md between <!-- sweep:begin --> and <!-- sweep:end -->.
 #
 #   scripts/sweep.sh [repetitions]      (default 5; about 2 minutes on 2 cores)
 #   SWEEP_PNG=/tmp scripts/sweep.sh     also writes PNG copies of the plots there
@@ -13,9 +14,13 @@
 # 2. runs variant_steps with interleaved repetitions and keeps the medians (JSON in
 #    build/sweep/variant_steps.json), then writes the time of each variant per scene as
 #    "variant,ns_per_step" (build/sweep/times-ballistic.csv, times-spring.csv);
-# 3. runs accuracy_comparison on both scenes at 1/15 .. 1/480 s with those times (CSV in
-#    build/sweep/pareto-ballistic.csv, pareto-spring.csv; the time to simulate the span is
-#    the time per step times the steps; it marks the Pareto front on that time);
+# 3. runs accuracy_comparison on the three scenes at 1/15 .. 1/480 s with those times (CSV in
+#    build/sweep/pareto-ballistic.csv, pareto-spring.csv, pareto-far.csv; the time to
+#    simulate the span is the time per step times the steps; it marks the Pareto front on
+#    that time). The far scene is the ballistic shots launched 1e6 m out along every axis,
+#    with the ballistic scene's times (a step costs the same wherever the particle is);
+#    accuracy_comparison stops the sweep if the wide positions there lose float's
+#    near-origin error (build/sweep/accuracy-far.txt has the check's table);
 # 4. draws the work-precision diagrams with gnuplot and writes the tables into
 #    docs/performance.md.
 set -euo pipefail
@@ -63,10 +68,12 @@ for scene in ("ballistic", "spring"):
 json.dump(ns, open(f"{build}/medians.json", "w"), indent=1)
 PY
 
-for scene in ballistic spring; do
+for scene in ballistic spring far; do
   echo "== accuracy: $scene scene at 1/${frame_rates//,/, 1/} s"
+  times=$scene
+  [[ $scene == far ]] && times=ballistic  # the same shots: a step costs the same far away
   "$build/examples/accuracy_comparison" --scene "$scene" --frame-times "$frame_rates" \
-    --times "$build/times-$scene.csv" --csv "$build/pareto-$scene.csv" --summary-only \
+    --times "$build/times-$times.csv" --csv "$build/pareto-$scene.csv" --summary-only \
     >"$build/accuracy-$scene.txt"
 done
 fi
@@ -75,8 +82,9 @@ fi
 # to simulate the scene's span with one particle (time per step x steps), both log scales.
 # One line per variant through its frame times (halving the step moves a point along its own
 # line: up in time, and left in error while the method, not rounding, limits it); colour =
-# damping policy,
-# marker = position policy, float dashed with open markers, double solid with filled ones.
+# damping policy, marker = position policy, line and marker fill = precision: float dashed
+# with open markers, double solid with filled ones, float with double positions dash-dotted
+# with filled markers, float with compensated positions dotted with open markers.
 # The Pareto front (no other variant and frame time simulates the span both faster and more
 # accurately) is the black staircase; each of its points is numbered and named in the list.
 # Opaque white background with dark text and lines, so it reads the same on light and dark
@@ -93,7 +101,13 @@ marker = {"Euler": 4, "Kinematic": 6, "SemiImplicit": 8, "Exact": 12}  # open; +
 marker_name = {"Euler": "square", "Kinematic": "circle", "SemiImplicit": "triangle",
                "Exact": "diamond"}
 title = {"ballistic": "Ballistic shots (pistol, artillery, fireball, laser; 5 s)",
-         "spring": "Mass on a spring (period 1 s, undamped and damped; 10 s)"}[scene]
+         "spring": "Mass on a spring (period 1 s, undamped and damped; 10 s)",
+         "far": "The same ballistic shots launched 1e6 m from the origin (along every axis; 5 s)"}[scene]
+# precision: (filled markers, dash type, line width, legend)
+style = {"double": (1, 1, 2, "double: solid, filled"),
+         "float": (0, 2, 1.5, "float: dashed, open"),
+         "float/double-pos": (1, 4, 2, "float/double-pos: dash-dot"),
+         "float/compensated-pos": (0, 3, 2, "float/compensated-pos: dotted")}
 variants = {}
 for r in rows:
     variants.setdefault(r["variant"], []).append(r)
@@ -129,10 +143,10 @@ for variant, points in variants.items():
     points.sort(key=lambda r: float(r["frame_time"]), reverse=True)
     real, pair = variant.split(" ", 1)
     damping, position = pair.split(" + ")
-    filled = 1 if real == "double" else 0
+    filled, dash, width, _ = style[real]
     clauses.append(
-        f"'-' using 1:2 with linespoints lc rgb \"{colour[damping]}\" lw {2 if filled else 1.5} "
-        f"dt {1 if filled else 2} pt {marker[position] + filled} ps 1.3 notitle")
+        f"'-' using 1:2 with linespoints lc rgb \"{colour[damping]}\" lw {width} "
+        f"dt {dash} pt {marker[position] + filled} ps 1.3 notitle")
 # the front: a staircase through its points (most accurate first)
 clauses.append("'-' using 1:2 with steps lc rgb \"black\" lw 2.5 title \"Pareto front\"")
 for damping, c in colour.items():
@@ -140,8 +154,10 @@ for damping, c in colour.items():
 for position, pt in marker.items():
     clauses.append(f'NaN with points pt {pt + 1} ps 1.3 lc rgb "#404040" '
                    f'title "position::{position} ({marker_name[position]})"')
-clauses.append('NaN with linespoints dt 1 lw 2 pt 7 lc rgb "#404040" title "double: solid, filled"')
-clauses.append('NaN with linespoints dt 2 lw 1.5 pt 6 lc rgb "#404040" title "float: dashed, open"')
+for real, (filled, dash, width, legend) in style.items():
+    if any(v.split(" ", 1)[0] == real for v in variants):
+        clauses.append(f'NaN with linespoints dt {dash} lw {width} pt {6 + filled} '
+                       f'lc rgb "#404040" title "{legend}"')
 print("plot " + ", \\\n     ".join(clauses))
 for variant, points in variants.items():
     for r in points:
@@ -155,7 +171,7 @@ PY
 }
 
 mkdir -p "$images"
-for scene in ballistic spring; do
+for scene in ballistic spring far; do
   plot "$scene" 'svg size 1280,760 dynamic background rgb "white" font "sans,13"' \
     "$images/pareto-$scene.svg"
   echo "wrote $images/pareto-$scene.svg"
@@ -171,11 +187,19 @@ import csv, json, sys
 build, doc, repetitions = sys.argv[1], sys.argv[2], sys.argv[3]
 ns = json.load(open(f"{build}/medians.json"))
 context = json.load(open(f"{build}/variant_steps.json"))["context"]
-rows = {scene: list(csv.DictReader(open(f"{build}/pareto-{scene}.csv")))
-        for scene in ("ballistic", "spring")}
+scenes = ("ballistic", "spring", "far")
+rows = {scene: list(csv.DictReader(open(f"{build}/pareto-{scene}.csv"))) for scene in scenes}
+# The precisions in the order of the tables; the wide positions' arithmetic is float's.
+precisions = ("float", "double", "float/double-pos", "float/compensated-pos")
+wide = ("float/double-pos", "float/compensated-pos")
+
+def arithmetic(variant):
+    real = variant.split(" ")[0]
+    return "float" if real in wide else real
 
 def base(scene, variant):
-    return ns[f"hand-written/{scene}/{variant.split(' ')[0]}"]
+    # the far scene is the ballistic shots, timed as they are
+    return ns[f"hand-written/{'ballistic' if scene == 'far' else scene}/{arithmetic(variant)}"]
 
 def frame(r):
     return f"1/{round(1 / float(r['frame_time']))}"
@@ -186,8 +210,9 @@ out.append(f"Measured by `scripts/sweep.sh {repetitions}` on {context.get('num_c
            "interleaved repetitions. Absolute times vary between machines and runs; the ratios "
            "(taken within one run) are the figures to compare.\n")
 titles = {"ballistic": "Ballistic shots (`pareto-ballistic.svg`)",
-          "spring": "Mass on a spring (`pareto-spring.svg`)"}
-for scene in ("ballistic", "spring"):
+          "spring": "Mass on a spring (`pareto-spring.svg`)",
+          "far": "Ballistic shots 1e6 m from the origin (`pareto-far.svg`)"}
+for scene in scenes:
     out.append(f"#### Pareto front: {titles[scene]}\n")
     out.append("Numbered as in the diagram, most accurate first; the front is taken on the time "
                "to simulate the span.\n")
@@ -203,12 +228,17 @@ for scene in ("ballistic", "spring"):
     out.append("")
 
 out.append("#### Error at each frame time (m, largest over the scene)\n")
+out.append("The far scene's rows are the policy pairs swept with wide positions (every pair is "
+           "in its plot and in `build/sweep/pareto-far.csv`).\n")
 rates = sorted({frame(r) for r in rows["ballistic"]}, key=lambda s: int(s[2:]))
+wide_pairs = {r["variant"].split(" ", 1)[1] for r in rows["far"] if r["variant"].split(" ")[0] in wide}
 out.append("| variant | scene | " + " | ".join(rates) + " |")
 out.append("|---|---|" + "---|" * len(rates))
-for scene in ("ballistic", "spring"):
+for scene in scenes:
     errors = {}
     for r in rows[scene]:
+        if scene == "far" and r["variant"].split(" ", 1)[1] not in wide_pairs:
+            continue
         errors.setdefault(r["variant"], {})[frame(r)] = float(r["error_m"])
     for variant, by_rate in errors.items():
         out.append(f"| {variant} | {scene} | " +
@@ -216,15 +246,18 @@ for scene in ("ballistic", "spring"):
 out.append("")
 
 out.append("#### Time per particle-step (ns) and ratio to the hand-written loop\n")
+out.append("The far scene takes the ballistic column's times. Wide positions are compared "
+           "with the float loop (their arithmetic).\n")
 out.append("| variant | `Particle`, ballistic | ratio | `Particle`, spring | ratio | "
            "`ParticleSystem`, sparks | ratio |")
 out.append("|---|---|---|---|---|---|---|")
-for real in ("float", "double"):
-    hand = [ns[f"hand-written/{s}/{real}"] for s in ("ballistic", "spring", "sparks")]
-    out.append(f"| **hand-written loop, {real}** | {hand[0]:.2f} | 1 | {hand[1]:.2f} | 1 | "
-               f"{hand[2]:.3f} | 1 |")
+for real in precisions:
+    hand = [ns[f"hand-written/{s}/{arithmetic(real)}"] for s in ("ballistic", "spring", "sparks")]
+    if real not in wide:
+        out.append(f"| **hand-written loop, {real}** | {hand[0]:.2f} | 1 | {hand[1]:.2f} | 1 | "
+                   f"{hand[2]:.3f} | 1 |")
     for variant in dict.fromkeys(r["variant"] for r in rows["ballistic"]):
-        if not variant.startswith(real + " "):
+        if variant.split(" ")[0] != real:
             continue
         cells = []
         for kind, scene, h in (("Particle", "ballistic", hand[0]), ("Particle", "spring", hand[1]),

@@ -17,6 +17,7 @@
 #include <pointmass/damping.hpp>
 #include <pointmass/particle.hpp>
 #include <pointmass/position.hpp>
+#include <pointmass/precision.hpp>
 #include <pointmass/extras/scenes.hpp>
 #include <pointmass/vector3.hpp>
 
@@ -37,6 +38,11 @@ struct Scene {
   double stiffness = 0;  ///< spring to the origin, N/m, added each step with add_force
   double friction = 0;   ///< N s/m, added each step with add_force
   double duration = 5;   ///< s
+  /// Where the scene's frame sits in the world: the particle is launched from offset +
+  /// start_position, and its samples are taken relative to offset (exactly, in double), so
+  /// the continuous reference is computed near the origin and is not limited by double's
+  /// resolution at the offset. The spring is anchored at offset.
+  Vector3<double> offset{};
 
   bool has_spring() const { return stiffness != 0 || friction != 0; }
   double angular_frequency() const { return std::sqrt(stiffness / mass); }
@@ -57,6 +63,17 @@ inline std::vector<Scene> ballistic_scenes() {
     s.damping = shot.damping;
     s.duration = scenes::ballistic_duration<double>;
     scenes.push_back(s);
+  }
+  return scenes;
+}
+
+/// The ballistic shots launched far from the origin: from offset + (0, 1.5, 0), by default
+/// 1e6 m out along every axis (the shots move in y and z), where a float resolves 1/16 m.
+inline std::vector<Scene> far_ballistic_scenes(const Vector3<double>& offset = {1e6, 1e6, 1e6}) {
+  auto scenes = ballistic_scenes();
+  for (auto& s : scenes) {
+    s.name += " far from the origin";
+    s.offset = offset;
   }
   return scenes;
 }
@@ -107,6 +124,38 @@ constexpr const char* position_name() {
 template <class D, class P>
 std::string combination_name() {
   return std::string(damping_name<D>()) + " + " + position_name<P>();
+}
+
+/// The name of a precision choice (the first template argument of Particle): "float",
+/// "double", "float/double-pos" (Precision<float, double>), "float/compensated-pos"
+/// (Precision<float, Compensated<float>>).
+template <class S>
+std::string precision_name() {
+  using R = real_of_t<S>;
+  using Position = position_precision_of_t<S>;
+  const std::string real = std::is_same_v<R, float> ? "float" : std::is_same_v<R, double> ? "double" : "long-double";
+  if constexpr (std::is_same_v<R, Position>) return real;
+  else if constexpr (detail::is_compensated_v<Position>) return real + "/compensated-pos";
+  else return real + (std::is_same_v<Position, double> ? "/double-pos" : "/long-double-pos");
+}
+/// A variant's name: precision, damping + position ("float/double-pos Exact + Exact").
+template <class S, class D, class P>
+std::string variant_name() {
+  return precision_name<S>() + " " + combination_name<D, P>();
+}
+
+/// The position precisions beside float and double that the run-time-against-error sweep
+/// covers (Precision<float, double> and Precision<float, Compensated<float>>), each with the
+/// policy pairs that matter for them (for_each_wide_combination).
+using FloatWithDoublePositions = Precision<float, double>;
+using FloatWithCompensatedPositions = Precision<float, Compensated<float>>;
+
+/// Calls f.template operator()<D, P>() for the pairs the wide-position variants are swept
+/// with: the default (PerSecond + Euler) and the exact pair (Exact + Exact).
+template <class F>
+void for_each_wide_combination(F&& f) {
+  f.template operator()<damping::PerSecond, position::Euler>();
+  f.template operator()<damping::Exact, position::Exact>();
 }
 
 /// Calls f.template operator()<D, P>() for every valid combination (17: position::Exact
@@ -165,15 +214,30 @@ Vector3<double> widen(const Vector3<R>& v) {
   return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
 }
 
-/// A particle of combination (R, D, P) set up for scene s at frame time h.
-template <Real R, class D, class P>
-Particle<R, D, P> make_particle(const Scene& s, double h) {
-  Particle<R, D, P> particle;
-  particle.set_position(cast<R>(s.start_position));
+/// The particle's position relative to `offset`, in double: exact for a position within a
+/// factor of two of the offset (then the difference is a double), and for a compensated
+/// position hi + lo computed as (hi - offset) + lo, so lo is not rounded away at the offset.
+template <class S, class D, class P>
+Vector3<double> relative_position(const Particle<S, D, P>& particle, const Vector3<double>& offset) {
+  if constexpr (requires { particle.stored_position_error(); }) {
+    return (widen(particle.stored_position()) - offset) + widen(particle.stored_position_error());
+  } else {
+    return widen(particle.position()) - offset;
+  }
+}
+
+/// A particle of combination (S, D, P) set up for scene s at frame time h (S a Real, or a
+/// Precision<Real, Position>): launched from s.offset + s.start_position.
+template <class S, class D, class P>
+Particle<S, D, P> make_particle(const Scene& s, double h) {
+  using R = real_of_t<S>;
+  using Position = typename Particle<S, D, P>::position_type;
+  Particle<S, D, P> particle;
+  particle.set_position(cast<Position>(s.offset + s.start_position));
   particle.set_velocity(cast<R>(s.start_velocity));
   particle.set_acceleration(cast<R>(s.gravity));
   particle.set_mass(static_cast<R>(s.mass));
-  if constexpr (Particle<R, D, P>::stores_damping) {
+  if constexpr (Particle<S, D, P>::stores_damping) {
     // PerFrame: the fraction kept per frame that removes the scene's per-second fraction.
     const double d = std::is_same_v<D, damping::PerFrame> ? std::pow(s.damping, h) : s.damping;
     particle.set_damping(static_cast<R>(d));
@@ -182,28 +246,31 @@ Particle<R, D, P> make_particle(const Scene& s, double h) {
 }
 
 /// One frame: the scene's spring and friction forces (from the state at the start of the
-/// frame) through add_force, then integrate(h).
-template <Real R, class D, class P>
-void step(Particle<R, D, P>& particle, const Scene& s, R h) {
+/// frame, the spring from the position relative to s.offset) through add_force, then
+/// integrate(h).
+template <class S, class D, class P>
+void step(Particle<S, D, P>& particle, const Scene& s, real_of_t<S> h) {
+  using R = real_of_t<S>;
   if (s.has_spring()) {
-    const Vector3<R> force = particle.position() * static_cast<R>(-s.stiffness) +
+    const Vector3<R> force = cast<R>(relative_position(particle, s.offset)) * static_cast<R>(-s.stiffness) +
                              particle.velocity() * static_cast<R>(-s.friction);
     particle.add_force(force);
   }
   particle.integrate(h);
 }
 
-/// The particle's samples at n h, n = 0 .. steps.
-template <Real R, class D, class P>
+/// The particle's samples at n h, n = 0 .. steps; positions relative to s.offset.
+template <class S, class D, class P>
 std::vector<reference::Sample> simulate(const Scene& s, double h, long steps) {
-  auto particle = make_particle<R, D, P>(s, h);
+  using R = real_of_t<S>;
+  auto particle = make_particle<S, D, P>(s, h);
   std::vector<reference::Sample> samples;
   samples.reserve(static_cast<std::size_t>(steps) + 1);
-  samples.push_back({widen(particle.position()), widen(particle.velocity())});
+  samples.push_back({relative_position(particle, s.offset), widen(particle.velocity())});
   const R frame = static_cast<R>(h);
   for (long n = 0; n < steps; ++n) {
     step(particle, s, frame);
-    samples.push_back({widen(particle.position()), widen(particle.velocity())});
+    samples.push_back({relative_position(particle, s.offset), widen(particle.velocity())});
   }
   return samples;
 }
@@ -255,7 +322,7 @@ inline FarFlight fly_far_from_origin(long steps) {
 }
 
 /// The reference for combination D on scene s: the closed form without a spring, Odeint
-/// otherwise.
+/// otherwise; in the scene's frame (relative to s.offset, as simulate's samples are).
 template <class D>
 std::vector<reference::Sample> reference_trajectory(const Scene& s, double h, long steps) {
   const auto model = model_of<D>(s);
