@@ -23,19 +23,13 @@
 #include <vector>
 
 #include "reference_engine.hpp"
+#include "support/bench_support.hpp"
 
 namespace {
 
 using namespace pointmass;
+using namespace pointmass_benchmarks;
 
-// The step, a run-time value (set in main from the argument count), so that no loop folds it.
-float float_duration = 0.0f;
-double double_duration = 0.0;
-template <class R>
-R duration() {
-  if constexpr (sizeof(R) == sizeof(float)) return float_duration;
-  else return double_duration;
-}
 // A length that changes every step: t and t (1 + 2^-10) in turn.
 template <class R>
 R varying_duration(std::int64_t step) {
@@ -69,20 +63,26 @@ std::vector<Start<R>> starts(std::size_t count) {
 template <class R>
 constexpr Vector3<R> gravity_vector{R(0), R(-9.81f), R(0)};
 
-// --- the reference engine's loop: the baseline ------------------------------------------------
-
-template <class R, bool Varying>
-void BM_Engine(benchmark::State& state) {
-  const auto count = static_cast<std::size_t>(state.range(0));
-  std::vector<reference_engine::Particle<R>> particles(count);
+/// `count` particles of type P set up from starts<R>: a Vector3<R> is passed through
+/// `vector` (the reference engine's particle takes its own vector type).
+template <class P, class R, class ToVector>
+std::vector<P> particles_from_starts(std::size_t count, ToVector vector) {
+  std::vector<P> particles(count);
   const auto s = starts<R>(count);
   for (std::size_t i = 0; i < count; ++i) {
-    particles[i].set_position({s[i].position.x, s[i].position.y, s[i].position.z});
-    particles[i].set_velocity({s[i].velocity.x, s[i].velocity.y, s[i].velocity.z});
+    particles[i].set_position(vector(s[i].position));
+    particles[i].set_velocity(vector(s[i].velocity));
     particles[i].set_mass(s[i].mass);
     particles[i].set_damping(damping_value<R>);
-    particles[i].set_acceleration({R(0), gravity_vector<R>.y, R(0)});
+    particles[i].set_acceleration(vector(gravity_vector<R>));
   }
+  return particles;
+}
+
+/// The timed loop of a vector of particles, each stepped by its `integrate`: at a fixed step,
+/// or (Varying) at a length that changes every step.
+template <class R, bool Varying, class P>
+void integrate_loop(benchmark::State& state, std::vector<P>& particles) {
   std::int64_t step = 0;
   for (auto _ : state) {
     const R t = Varying ? varying_duration<R>(step++) : duration<R>();
@@ -90,31 +90,26 @@ void BM_Engine(benchmark::State& state) {
     benchmark::DoNotOptimize(particles.data());
     benchmark::ClobberMemory();
   }
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(particles.size()));
+}
+
+// --- the reference engine's loop: the baseline ------------------------------------------------
+
+template <class R, bool Varying>
+void BM_Engine(benchmark::State& state) {
+  auto particles = particles_from_starts<reference_engine::Particle<R>, R>(
+      static_cast<std::size_t>(state.range(0)),
+      [](const Vector3<R>& v) { return reference_engine::Vector3<R>(v.x, v.y, v.z); });
+  integrate_loop<R, Varying>(state, particles);
 }
 
 // --- vectors of Particle ------------------------------------------------------------------------
 
 template <class R, class D, class P, bool Varying>
 void BM_Particles(benchmark::State& state) {
-  const auto count = static_cast<std::size_t>(state.range(0));
-  std::vector<Particle<R, D, P>> particles(count);
-  const auto s = starts<R>(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    particles[i].set_position(s[i].position);
-    particles[i].set_velocity(s[i].velocity);
-    particles[i].set_mass(s[i].mass);
-    particles[i].set_damping(damping_value<R>);
-    particles[i].set_acceleration(gravity_vector<R>);
-  }
-  std::int64_t step = 0;
-  for (auto _ : state) {
-    const R t = Varying ? varying_duration<R>(step++) : duration<R>();
-    for (auto& p : particles) p.integrate(t);
-    benchmark::DoNotOptimize(particles.data());
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
+  auto particles = particles_from_starts<Particle<R, D, P>, R>(
+      static_cast<std::size_t>(state.range(0)), [](const Vector3<R>& v) { return v; });
+  integrate_loop<R, Varying>(state, particles);
 }
 
 // --- the hand-written loop: the default Particle's arithmetic over a plain struct ---------------
@@ -129,6 +124,15 @@ struct HandParticle {
   R kept;  // d^t for the fixed step, computed once
 };
 
+/// A hand-written particle's step once its d^t is `p.kept`: a = acceleration + force * inverse
+/// mass, p += v t, v = v d^t + a t (the caller skips immovable particles and clears the force).
+template <class Hand, class R>
+void hand_advance(Hand& p, R t) {
+  const Vector3<R> a = p.acceleration + p.force * p.inverse_mass;
+  p.position = p.position + p.velocity * t;
+  p.velocity = p.velocity * p.kept + a * t;
+}
+
 template <class R>
 void BM_HandStruct(benchmark::State& state) {
   const auto count = static_cast<std::size_t>(state.range(0));
@@ -141,11 +145,7 @@ void BM_HandStruct(benchmark::State& state) {
   }
   for (auto _ : state) {
     for (auto& p : particles) {
-      if (p.inverse_mass > R(0)) {
-        const Vector3<R> a = p.acceleration + p.force * p.inverse_mass;
-        p.position = p.position + p.velocity * t;
-        p.velocity = p.velocity * p.kept + a * t;
-      }
+      if (p.inverse_mass > R(0)) hand_advance(p, t);
       p.force = {};
     }
     benchmark::DoNotOptimize(particles.data());
@@ -194,9 +194,7 @@ void BM_HandSameData(benchmark::State& state) {
           p.kept = detail::pow_unit_scalar(p.log_damping, t);
           p.kept_duration = t;
         }
-        const Vector3<R> a = p.acceleration + p.force * p.inverse_mass;
-        p.position = p.position + p.velocity * t;
-        p.velocity = p.velocity * p.kept + a * t;
+        hand_advance(p, t);
       }
       p.force = {};
     }
@@ -368,17 +366,11 @@ bool step_moves_particles() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // 1/60 s, computed at run time from the program's arguments' count (always >= 1).
-  float_duration = 1.0f / (60.0f * static_cast<float>(argc > 0 ? 1 : 2));
-  double_duration = 1.0 / (60.0 * (argc > 0 ? 1 : 2));
+  set_duration(argc);
   if (!step_moves_particles<float>() || !step_moves_particles<double>()) {
     std::fputs("engine_step: a step did not move the particles; the timings would be void\n",
                stderr);
     return 1;
   }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return run_benchmarks(argc, argv);
 }

@@ -17,12 +17,12 @@
 #include <cstdlib>
 #include <random>
 
+#include "support/bench_support.hpp"
+
 namespace {
 
 using namespace pointmass;
-
-// The step, a run-time value (set in main), so the compiler cannot fold it.
-float step_length = 0.0f;
+using namespace pointmass_benchmarks;
 
 template <class System>
 System make_system(std::size_t count) {
@@ -47,7 +47,7 @@ void BM_Step(benchmark::State& state) {
   const auto count = static_cast<std::size_t>(state.range(0));
   System system = make_system<System>(count);
   for (auto _ : state) {
-    system.step(step_length);
+    system.step(duration<float>());
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
@@ -75,18 +75,14 @@ POINTMASS_LARGE_WORLDS_BENCHMARK(CompensatedShots);
 }  // namespace
 
 int main(int argc, char** argv) {
-  step_length = argc > 0 && argv[0] != nullptr ? 1.0f / 60.0f : 0.0f;
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  set_duration(argc);
   // A step must move the particles (else the timed loops could be doing nothing).
   auto probe = make_system<CompensatedSparks>(4);
   const auto before = probe.position(0);
-  probe.step(step_length);
+  probe.step(duration<float>());
   if (!(probe.position(0).x != before.x)) {
     std::fputs("large_worlds_step: a step did not move the particles\n", stderr);
     return EXIT_FAILURE;
   }
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return run_benchmarks(argc, argv);
 }

@@ -23,19 +23,12 @@
 #include <type_traits>
 #include <vector>
 
+#include "support/bench_parallel.hpp"
+
 namespace {
 
 using namespace pointmass;
-
-// The step, a run-time value from outside every timed loop (set in main), so the compiler
-// cannot fold it; main checks that a step really moves the particles.
-float float_duration = 0.0f;
-double double_duration = 0.0;
-template <class R>
-R duration() {
-  if constexpr (sizeof(R) == sizeof(float)) return float_duration;
-  else return double_duration;
-}
+using namespace pointmass_benchmarks;
 
 template <class R>
 Vector3<R> random_vector(std::mt19937& engine, R scale) {
@@ -126,26 +119,6 @@ void BM_SystemParallel(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
-// Six arrays in one block, each offset by k x 448 bytes within its page.
-template <class R>
-struct StaggeredArrays {
-  explicit StaggeredArrays(std::size_t count) {
-    const std::size_t span = (count * sizeof(R) + 4095) / 4096 * 4096 + 448;
-    block = static_cast<R*>(::operator new(6 * span, std::align_val_t{64}));
-    std::mt19937 engine(1);
-    std::uniform_real_distribution<R> value(R(-10), R(10));
-    for (std::size_t k = 0; k < 6; ++k) {
-      array[k] = reinterpret_cast<R*>(reinterpret_cast<char*>(block) + k * span);
-      for (std::size_t i = 0; i < count; ++i) array[k][i] = value(engine);
-    }
-  }
-  ~StaggeredArrays() { ::operator delete(block, std::align_val_t{64}); }
-  StaggeredArrays(const StaggeredArrays&) = delete;
-  StaggeredArrays& operator=(const StaggeredArrays&) = delete;
-  R* block;
-  R* array[6];
-};
-
 // The same maths as ParticleSystem<R> (per-second damping, d^t once per step, p + v0 t),
 // written by hand.
 template <class R>
@@ -228,47 +201,17 @@ void BM_HandAlwaysAlternating(benchmark::State& state) {
 
 // Read-modify-write of the same six arrays: the memory bound of a step.
 template <class R>
-void rmw(R* __restrict a0, R* __restrict a1, R* __restrict a2, R* __restrict a3,
-         R* __restrict a4, R* __restrict a5, std::size_t n, R c) {
-  for (std::size_t i = 0; i < n; ++i) {
-    a0[i] += c, a1[i] += c, a2[i] += c, a3[i] += c, a4[i] += c, a5[i] += c;
-  }
-}
-
-template <class R>
 void BM_Bandwidth(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  StaggeredArrays<R> arrays(n);
-  const R c = duration<R>();
-  R** a = arrays.array;
-  for (auto _ : state) {
-    rmw(a[0], a[1], a[2], a[3], a[4], a[5], n, c);
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations() * state.range(0));
+  StaggeredArrays<R> arrays(static_cast<std::size_t>(state.range(0)));
+  bandwidth(state, arrays);
   state.SetBytesProcessed(state.iterations() * state.range(0) * 12 *
                           static_cast<std::int64_t>(sizeof(R)));
 }
 
 template <class R>
 void BM_BandwidthParallel(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  StaggeredArrays<R> arrays(n);
-  const R c = duration<R>();
-  R** a = arrays.array;
-  constexpr std::size_t chunk = 16384;
-  const std::size_t chunks = (n + chunk - 1) / chunk;
-  for (auto _ : state) {
-    std::for_each(std::execution::par_unseq, detail::CountingIterator(0),
-                  detail::CountingIterator(chunks), [&](std::size_t k) {
-                    const std::size_t begin = k * chunk;
-                    const std::size_t end = std::min(begin + chunk, n);
-                    rmw(a[0] + begin, a[1] + begin, a[2] + begin, a[3] + begin, a[4] + begin,
-                        a[5] + begin, end - begin, c);
-                  });
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations() * state.range(0));
+  StaggeredArrays<R> arrays(static_cast<std::size_t>(state.range(0)));
+  bandwidth_parallel(state, arrays);
 }
 
 // The seed's layout: one Particle object per particle, each integrated on its own.
@@ -416,9 +359,7 @@ bool step_moves_particles() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // 1/60 s, computed at run time from the program's arguments' count (always >= 1).
-  float_duration = 1.0f / (60.0f * static_cast<float>(argc > 0 ? 1 : 2));
-  double_duration = 1.0 / (60.0 * (argc > 0 ? 1 : 2));
+  set_duration(argc);
   if (!step_moves_particles<float>() || !step_moves_particles<double>()) {
     std::fputs("system_step: a step did not move the particles; the timings would be void\n",
                stderr);
@@ -426,14 +367,5 @@ int main(int argc, char** argv) {
   }
   // The smoke test (system_step.cmake sets POINTMASS_BENCHMARK_SMOKE) skips the 10^7 sizes,
   // which take minutes to set up in a debug build.
-  std::vector<char*> arguments(argv, argv + argc);
-  char smoke_filter[] = "--benchmark_filter=/(1000|100000)$";
-  if (std::getenv("POINTMASS_BENCHMARK_SMOKE") != nullptr) arguments.push_back(smoke_filter);
-  argc = static_cast<int>(arguments.size());
-  argv = arguments.data();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return run_benchmarks(argc, argv, "--benchmark_filter=/(1000|100000)$");
 }

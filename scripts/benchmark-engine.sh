@@ -11,21 +11,12 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 ensure_packages cmake ninja-build g++ libbenchmark-dev libtbb-dev python3
 repetitions=${1:-15}
 build=${POINTMASS_BENCHMARK_BUILD:-"$POINTMASS_ROOT/build/benchmark-engine"}
-cmake -S "$POINTMASS_ROOT" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_CXX_FLAGS="-march=native" >/dev/null
-cmake --build "$build" --target engine_step >/dev/null
+build_release "$build" engine_step
 json=$(mktemp)
 trap 'rm -f "$json"' EXIT
-"$build/benchmarks/engine_step" --benchmark_repetitions="$repetitions" \
-  --benchmark_enable_random_interleaving=true --benchmark_min_time=0.05 \
-  --benchmark_report_aggregates_only=true --benchmark_format=json >"$json"
+run_repetitions "$json" "$build/benchmarks/engine_step" "$repetitions" 0.05
 tables="$build/engine-tables.md"
-python3 - "$json" "$repetitions" >"$tables" <<'PY'
-import json, sys
-data = json.load(open(sys.argv[1]))
-rate = {b["run_name"]: b["items_per_second"] / 1e6
-        for b in data["benchmarks"] if b.get("aggregate_name") == "median"}
-ctx = data["context"]
+median_table "$json" "$repetitions" >"$tables" <<'PY'
 print(f"Command: `scripts/benchmark-engine.sh {sys.argv[2]}`. Machine: {ctx.get('num_cpus')} CPUs "
       f"at {ctx.get('mhz_per_cpu')} MHz, one thread; -O3 -march=native; medians of "
       f"{sys.argv[2]} interleaved repetitions. Each cell: M particle-steps/s, and in brackets "
@@ -111,6 +102,4 @@ for real in ("float", "double"):
          f"BM_BandwidthBytes<{real}, sizeof(HandParticle<{real}>)>", "(the bytes' ratio)", big)
     print()
 PY
-cat "$tables"
-replace_between_markers "$POINTMASS_ROOT/docs/performance.md" engine "$tables"
-echo "updated docs/performance.md"
+publish_table "$POINTMASS_ROOT/docs/performance.md" engine "$tables"

@@ -10,23 +10,13 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev libtbb-dev python3
 repetitions=${1:-15}
 build="${POINTMASS_BENCHMARK_BUILD:-$POINTMASS_ROOT/build/benchmark-system}"
-cmake -S "$POINTMASS_ROOT" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DPOINTMASS_BUILD_TESTS=OFF -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_BENCHMARKS=ON \
-  -DCMAKE_CXX_FLAGS="-march=native" >/dev/null
-cmake --build "$build" --target system_step >/dev/null
+build_release "$build" system_step "${POINTMASS_BENCHMARKS_ONLY[@]}"
 json=$(mktemp)
 trap 'rm -f "$json"' EXIT
-"$build/benchmarks/system_step" --benchmark_repetitions="$repetitions" \
-  --benchmark_filter='BM_System<(Sparks|Interpolated|GameSparks)<float>>/(100000|1000000)$|BM_Copy' \
-  --benchmark_enable_random_interleaving=true --benchmark_min_time=0.05 \
-  --benchmark_report_aggregates_only=true --benchmark_format=json >"$json"
+run_repetitions "$json" "$build/benchmarks/system_step" "$repetitions" 0.05 \
+  --benchmark_filter='BM_System<(Sparks|Interpolated|GameSparks)<float>>/(100000|1000000)$|BM_Copy'
 table="$build/handoff.md"
-python3 - "$json" "$repetitions" >"$table" <<'PY'
-import json, sys
-data = json.load(open(sys.argv[1]))
-rate = {b["run_name"]: b["items_per_second"] / 1e6
-        for b in data["benchmarks"] if b.get("aggregate_name") == "median"}
-ctx = data["context"]
+median_table "$json" "$repetitions" >"$table" <<'PY'
 print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; medians of "
       f"{sys.argv[2]} interleaved repetitions (`scripts/benchmark-handoff.sh {sys.argv[2]}`), "
       "float, M particles/s; time / step: the row's time over the lean step's, same size.\n")
@@ -46,6 +36,4 @@ for label, name in rows:
         cells += [f"{v:,.0f}", f"{step / v:.2f}"] if v and step else ["", ""]
     print(f"| {label} | " + " | ".join(cells) + " |")
 PY
-cat "$table"
-replace_between_markers "$POINTMASS_ROOT/docs/particle-system.md" handoff "$table"
-echo "updated docs/particle-system.md"
+publish_table "$POINTMASS_ROOT/docs/particle-system.md" handoff "$table"

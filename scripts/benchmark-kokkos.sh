@@ -10,23 +10,13 @@ ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev libtbb-dev p
   libtrilinos-kokkos-dev
 repetitions=${1:-10}
 build="$POINTMASS_ROOT/build/benchmark-kokkos"
-cmake -S "$POINTMASS_ROOT" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DPOINTMASS_BUILD_TESTS=OFF -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_BENCHMARKS=ON \
-  -DCMAKE_CXX_FLAGS="-march=native" >/dev/null
-cmake --build "$build" --target kokkos_step >/dev/null
+build_release "$build" kokkos_step "${POINTMASS_BENCHMARKS_ONLY[@]}"
 json=$(mktemp)
 trap 'rm -f "$json"' EXIT
-"$build/benchmarks/kokkos_step" --benchmark_filter=/10000000/ \
-  --benchmark_repetitions="$repetitions" --benchmark_enable_random_interleaving=true \
-  --benchmark_min_time=0.5 --benchmark_report_aggregates_only=true \
-  --benchmark_format=json >"$json"
+run_repetitions "$json" "$build/benchmarks/kokkos_step" "$repetitions" 0.5 \
+  --benchmark_filter=/10000000/
 tables="$build/tables.md"
-python3 - "$json" "$repetitions" >"$tables" <<'PY'
-import json, sys
-data = json.load(open(sys.argv[1]))
-rate = {b["run_name"]: b["items_per_second"] / 1e6
-        for b in data["benchmarks"] if b.get("aggregate_name") == "median"}
-ctx = data["context"]
+median_table "$json" "$repetitions" >"$tables" <<'PY'
 print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; medians of "
       f"{sys.argv[2]} interleaved repetitions (`scripts/benchmark-kokkos.sh {sys.argv[2]}`), "
       "M particle-steps/s at 10,000,000 particles, `ParticleSystem<R>` (uniform per-second "
@@ -56,6 +46,4 @@ for label, a, b, target in [
         ("Kokkos OpenMP / `par_unseq`", "BM_Kokkos<%s, Kokkos::OpenMP>", "BM_SystemParallel<%s>", "")]:
     print(f"| {label} | {ratio(a, b, 'float')} | {ratio(a, b, 'double')} | {target} |")
 PY
-cat "$tables"
-replace_between_markers "$POINTMASS_ROOT/docs/performance.md" kokkos "$tables"
-echo "updated docs/performance.md"
+publish_table "$POINTMASS_ROOT/docs/performance.md" kokkos "$tables"

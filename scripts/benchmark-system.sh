@@ -11,22 +11,12 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev libtbb-dev python3
 repetitions=${1:-15}
 build="$POINTMASS_ROOT/build/benchmark-system"
-cmake -S "$POINTMASS_ROOT" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DPOINTMASS_BUILD_TESTS=OFF -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_BENCHMARKS=ON \
-  -DCMAKE_CXX_FLAGS="-march=native" >/dev/null
-cmake --build "$build" --target system_step >/dev/null
+build_release "$build" system_step "${POINTMASS_BENCHMARKS_ONLY[@]}"
 json=$(mktemp)
 trap 'rm -f "$json"' EXIT
-"$build/benchmarks/system_step" --benchmark_repetitions="$repetitions" \
-  --benchmark_enable_random_interleaving=true --benchmark_min_time=0.05 \
-  --benchmark_report_aggregates_only=true --benchmark_format=json >"$json"
+run_repetitions "$json" "$build/benchmarks/system_step" "$repetitions" 0.05
 tables="$build/tables.md"
-python3 - "$json" "$repetitions" >"$tables" <<'PY'
-import json, sys
-data = json.load(open(sys.argv[1]))
-rate = {b["run_name"]: b["items_per_second"] / 1e6
-        for b in data["benchmarks"] if b.get("aggregate_name") == "median"}
-ctx = data["context"]
+median_table "$json" "$repetitions" >"$tables" <<'PY'
 print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; "
       f"{ctx.get('library_build_type', '')} Google Benchmark; medians of "
       f"{sys.argv[2]} interleaved repetitions (`scripts/benchmark-system.sh {sys.argv[2]}`), "
@@ -80,6 +70,4 @@ for label, name in [("default: uniform per-second damping and gravity", "Sparks"
     v = rate[f"BM_System<{name}<float>>/100000"]
     print(f"| {label} | {v:,.0f} | {v / base:.2f} |")
 PY
-cat "$tables"
-replace_between_markers "$POINTMASS_ROOT/docs/performance.md" system "$tables"
-echo "updated docs/performance.md"
+publish_table "$POINTMASS_ROOT/docs/performance.md" system "$tables"

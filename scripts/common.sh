@@ -44,3 +44,50 @@ replace_between_markers() {
     $0 == begin { while ((getline line < table) > 0) print line; skipping = 1 }
   ' "$doc" > "$doc.new" && mv "$doc.new" "$doc"
 }
+
+# The benchmark scripts' steps.
+
+# CMake arguments for a build of the benchmarks alone (no tests, no examples).
+POINTMASS_BENCHMARKS_ONLY=(-DPOINTMASS_BUILD_TESTS=OFF -DPOINTMASS_BUILD_EXAMPLES=OFF
+                           -DPOINTMASS_BUILD_BENCHMARKS=ON)
+
+# build_release BUILD_DIR "TARGET..." [cmake arguments...]: configures BUILD_DIR (Ninja,
+# Release, -march=native) and builds the named targets, quietly.
+build_release() {
+  local dir=$1 targets=$2
+  shift 2
+  cmake -S "$POINTMASS_ROOT" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" \
+    -DCMAKE_CXX_FLAGS="-march=native" >/dev/null
+  # shellcheck disable=SC2086  # the targets are words
+  cmake --build "$dir" --target $targets >/dev/null
+}
+
+# run_repetitions JSON PROGRAM REPETITIONS MIN_TIME [arguments...]: runs the Google Benchmark
+# PROGRAM with REPETITIONS interleaved repetitions of at least MIN_TIME seconds each, and
+# writes the aggregates (medians among them) as JSON to the file JSON.
+run_repetitions() {
+  local json=$1 program=$2 repetitions=$3 min_time=$4
+  shift 4
+  "$program" "$@" --benchmark_repetitions="$repetitions" \
+    --benchmark_enable_random_interleaving=true --benchmark_min_time="$min_time" \
+    --benchmark_report_aggregates_only=true --benchmark_format=json >"$json"
+}
+
+# median_table JSON REPETITIONS <<'PY' ... PY: runs the Python script on standard input with
+# sys.argv[1:] = JSON REPETITIONS and, defined before it, `data` (the JSON report), `ctx` (its
+# context) and `rate` (run name -> median items_per_second, in millions).
+median_table() {
+  python3 - "$1" "$2" <<<"import json, sys
+data = json.load(open(sys.argv[1]))
+rate = {b['run_name']: b['items_per_second'] / 1e6
+        for b in data['benchmarks'] if b.get('aggregate_name') == 'median'}
+ctx = data['context']
+$(cat)"
+}
+
+# publish_table DOC NAME FILE: prints FILE and writes it into DOC between the NAME markers.
+publish_table() {
+  cat "$3"
+  replace_between_markers "$1" "$2" "$3"
+  echo "updated ${1#"$POINTMASS_ROOT"/}"
+}

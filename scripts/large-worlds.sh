@@ -10,10 +10,8 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev python3
 repetitions=${1:-9}
 build=${LARGE_WORLDS_BUILD:-"$POINTMASS_ROOT/build/large-worlds"}
-cmake -S "$POINTMASS_ROOT" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DPOINTMASS_BUILD_TESTS=OFF -DPOINTMASS_BUILD_EXAMPLES=ON -DPOINTMASS_BUILD_BENCHMARKS=ON \
-  -DCMAKE_CXX_FLAGS="-march=native" >/dev/null
-cmake --build "$build" --target large_worlds large_worlds_step >/dev/null
+build_release "$build" "large_worlds large_worlds_step" -DPOINTMASS_BUILD_TESTS=OFF \
+  -DPOINTMASS_BUILD_EXAMPLES=ON -DPOINTMASS_BUILD_BENCHMARKS=ON
 doc="$POINTMASS_ROOT/docs/large-worlds.md"
 
 drift="$build/drift.md"
@@ -23,16 +21,9 @@ replace_between_markers "$doc" drift "$drift"
 
 json=$(mktemp)
 trap 'rm -f "$json"' EXIT
-"$build/benchmarks/large_worlds_step" --benchmark_repetitions="$repetitions" \
-  --benchmark_enable_random_interleaving=true --benchmark_min_time=0.05 \
-  --benchmark_report_aggregates_only=true --benchmark_format=json >"$json"
+run_repetitions "$json" "$build/benchmarks/large_worlds_step" "$repetitions" 0.05
 cost="$build/cost.md"
-python3 - "$json" "$repetitions" >"$cost" <<'PY'
-import json, sys
-data = json.load(open(sys.argv[1]))
-rate = {b["run_name"]: b["items_per_second"] / 1e6
-        for b in data["benchmarks"] if b.get("aggregate_name") == "median"}
-ctx = data["context"]
+median_table "$json" "$repetitions" >"$cost" <<'PY'
 print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; medians of "
       f"{sys.argv[2]} interleaved repetitions (`scripts/large-worlds.sh {sys.argv[2]}`); "
       "`ParticleSystem::step`, M particle-steps/s, and the cost against all-float in the same "
@@ -54,6 +45,4 @@ for kind, title in (("Sparks", "sparks: per-second damping, p + v t, gravity"),
         print(f"| {label} | {size} | " + " | ".join(cells) + " | " + " | ".join(costs) + f" | {target} |")
     print()
 PY
-cat "$cost"
-replace_between_markers "$doc" cost "$cost"
-echo "updated docs/large-worlds.md"
+publish_table "$doc" cost "$cost"

@@ -5,28 +5,18 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <limits>
 #include <type_traits>
 
 #include <pointmass/detail/exponential.hpp>
 
+#include "ulp.hpp"
+
 namespace {
 
 namespace detail = pointmass::detail;
 
-/// Distance in ulps between two values of R of any sign.
-template <class R>
-long long ulp_distance(R a, R b) {
-  using Bits = std::conditional_t<sizeof(R) == 4, std::int32_t, std::int64_t>;
-  Bits ia = 0, ib = 0;
-  std::memcpy(&ia, &a, sizeof a);
-  std::memcpy(&ib, &b, sizeof b);
-  const long long oa = ia < 0 ? -static_cast<long long>(ia & std::numeric_limits<Bits>::max()) : ia;
-  const long long ob = ib < 0 ? -static_cast<long long>(ib & std::numeric_limits<Bits>::max()) : ib;
-  return oa > ob ? oa - ob : ob - oa;
-}
+using pointmass::test::ulp_distance;
 
 // The bound the library states (docs/numerics.md), for d in [1e-3, 1] and t in [0, 1] s.
 constexpr long long stated_ulps = 4;

@@ -25,18 +25,12 @@
 #include <random>
 #include <vector>
 
+#include "../support/bench_parallel.hpp"
+
 namespace {
 
 using namespace pointmass;
-
-// 1/60 s, from outside every timed loop (set in main), so the compiler cannot fold it.
-float float_duration = 0.0f;
-double double_duration = 0.0;
-template <class R>
-R duration() {
-  if constexpr (sizeof(R) == sizeof(float)) return float_duration;
-  else return double_duration;
-}
+using namespace pointmass_benchmarks;
 
 template <class R>
 using Sparks = ParticleSystem<R>;
@@ -93,64 +87,17 @@ void BM_Kokkos(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
-// Six arrays in one block, each offset by k x 448 bytes within its page (as the system's).
-template <class R>
-struct StaggeredArrays {
-  explicit StaggeredArrays(std::size_t n) {
-    const std::size_t span = (n * sizeof(R) + 4095) / 4096 * 4096 + 448;
-    block = static_cast<std::byte*>(::operator new(6 * span, std::align_val_t{64}));
-    for (std::size_t k = 0; k < 6; ++k) {
-      array[k] = reinterpret_cast<R*>(block + k * span);
-      std::fill(array[k], array[k] + n, R(1));
-    }
-  }
-  ~StaggeredArrays() { ::operator delete(block, std::align_val_t{64}); }
-  StaggeredArrays(const StaggeredArrays&) = delete;
-  StaggeredArrays& operator=(const StaggeredArrays&) = delete;
-  std::byte* block = nullptr;
-  R* array[6] = {};
-};
-
-// Read-modify-write of six arrays: the memory bound of a step of six arrays.
-template <class R>
-void rmw(R* __restrict a0, R* __restrict a1, R* __restrict a2, R* __restrict a3,
-         R* __restrict a4, R* __restrict a5, std::size_t n, R c) {
-  for (std::size_t i = 0; i < n; ++i) {
-    a0[i] += c, a1[i] += c, a2[i] += c, a3[i] += c, a4[i] += c, a5[i] += c;
-  }
-}
-
+// Read-modify-write of the same six arrays on one and on two threads (values 1).
 template <class R>
 void BM_Bandwidth(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  StaggeredArrays<R> arrays(n);
-  R** a = arrays.array;
-  for (auto _ : state) {
-    rmw(a[0], a[1], a[2], a[3], a[4], a[5], n, duration<R>());
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations() * state.range(0));
+  StaggeredArrays<R> arrays(static_cast<std::size_t>(state.range(0)), R(1));
+  bandwidth(state, arrays);
 }
 
 template <class R>
 void BM_BandwidthParallel(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  StaggeredArrays<R> arrays(n);
-  R** a = arrays.array;
-  constexpr std::size_t chunk = 16384;
-  const std::size_t chunks = (n + chunk - 1) / chunk;
-  for (auto _ : state) {
-    const R c = duration<R>();
-    std::for_each(std::execution::par_unseq, detail::CountingIterator(0),
-                  detail::CountingIterator(chunks), [&](std::size_t k) {
-                    const std::size_t begin = k * chunk;
-                    const std::size_t end = std::min(begin + chunk, n);
-                    rmw(a[0] + begin, a[1] + begin, a[2] + begin, a[3] + begin, a[4] + begin,
-                        a[5] + begin, end - begin, c);
-                  });
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations() * state.range(0));
+  StaggeredArrays<R> arrays(static_cast<std::size_t>(state.range(0)), R(1));
+  bandwidth_parallel(state, arrays);
 }
 
 void sizes(benchmark::internal::Benchmark* b) {
@@ -188,8 +135,7 @@ bool kokkos_step_moves_particles() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  float_duration = 1.0f / (60.0f * static_cast<float>(argc > 0 ? 1 : 2));
-  double_duration = 1.0 / (60.0 * (argc > 0 ? 1 : 2));
+  set_duration(argc);
 #if KOKKOS_VERSION >= 30700
   Kokkos::initialize(Kokkos::InitializationSettings().set_num_threads(2));
 #else
@@ -203,17 +149,7 @@ int main(int argc, char** argv) {
     result = 1;
   } else {
     // The smoke test (POINTMASS_BENCHMARK_SMOKE) runs the 100,000 sizes only.
-    std::vector<char*> arguments(argv, argv + argc);
-    char smoke_filter[] = "--benchmark_filter=/100000/";
-    if (std::getenv("POINTMASS_BENCHMARK_SMOKE") != nullptr) arguments.push_back(smoke_filter);
-    int count = static_cast<int>(arguments.size());
-    benchmark::Initialize(&count, arguments.data());
-    if (benchmark::ReportUnrecognizedArguments(count, arguments.data())) {
-      result = 1;
-    } else {
-      benchmark::RunSpecifiedBenchmarks();
-      benchmark::Shutdown();
-    }
+    result = run_benchmarks(argc, argv, "--benchmark_filter=/100000/");
   }
   Kokkos::finalize();
   return result;

@@ -2,13 +2,8 @@
 # -DEXPECT=pass|fail. With EXPECT=fail the compilation must fail and its output must contain
 # the text of one of the snippet's "// expected-error: TEXT" lines (one line per compiler's
 # wording where g++ and clang differ).
-string(REPLACE "|" ";" include_dirs "${INCLUDE_DIRS}")
-set(include_flags)
-foreach(dir IN LISTS include_dirs)
-  if(dir)
-    list(APPEND include_flags "-I${dir}")
-  endif()
-endforeach()
+include("${CMAKE_CURRENT_LIST_DIR}/../../cmake/PointmassScripts.cmake")
+pointmass_include_flags(include_flags "${INCLUDE_DIRS}")
 
 execute_process(
   COMMAND "${COMPILER}" -std=c++20 -fsyntax-only

@@ -12,6 +12,7 @@
 #include <pointmass/forces.hpp>
 #include <pointmass/particle.hpp>
 
+#include "body.hpp"
 #include "tolerance.hpp"
 
 namespace {
@@ -19,16 +20,9 @@ namespace {
 using pointmass::Particle;
 using pointmass::Vector3;
 namespace forces = pointmass::forces;
+using pointmass::test::body_at;
 using pointmass::test::close;
-
-template <class R>
-Particle<R> body_at(Vector3<R> p, Vector3<R> v = {}, R mass = R(1)) {
-  Particle<R> particle;
-  particle.set_position(p);
-  particle.set_velocity(v);
-  particle.set_mass(mass);
-  return particle;
-}
+using pointmass::test::force_on;
 
 template <class R>
 Particle<R> immovable_at(Vector3<R> p) {
@@ -36,13 +30,6 @@ Particle<R> immovable_at(Vector3<R> p) {
   particle.set_position(p);
   particle.set_inverse_mass(R(0));
   return particle;
-}
-
-// The force one update_force call adds to a fresh particle.
-template <class G, class R>
-Vector3<R> force_on(const G& generator, Particle<R> particle, R dt = R(1) / R(60)) {
-  forces::update_force(generator, particle, dt);
-  return particle.force_accumulator();
 }
 
 }  // namespace

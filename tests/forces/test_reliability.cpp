@@ -18,6 +18,7 @@
 #include <pointmass/forces.hpp>
 #include <pointmass/particle.hpp>
 
+#include "body.hpp"
 #include "tolerance.hpp"
 
 namespace {
@@ -25,7 +26,9 @@ namespace {
 using pointmass::Particle;
 using pointmass::Vector3;
 namespace forces = pointmass::forces;
+using pointmass::test::body_at;
 using pointmass::test::close;
+using pointmass::test::force_on;
 
 /// A component where x^2 overflows R, and one where it underflows to below the smallest
 /// normal number (1e20, 1e-23 in float; 1e155, 1e-170 in double).
@@ -33,20 +36,6 @@ template <class R>
 constexpr R huge = std::is_same_v<R, float> ? R(1e20L) : R(1e155L);
 template <class R>
 constexpr R tiny = std::is_same_v<R, float> ? R(1e-23L) : R(1e-170L);
-
-template <class R>
-Particle<R> body_at(Vector3<R> p, Vector3<R> v = {}) {
-  Particle<R> body;
-  body.set_position(p);
-  body.set_velocity(v);
-  return body;
-}
-
-template <class G, class R>
-Vector3<R> force_on(const G& generator, Particle<R> body, R dt = R(0.01)) {
-  forces::update_force(generator, body, dt);
-  return body.force_accumulator();
-}
 
 template <class F>
 std::string violation_message(F&& call) {

@@ -16,9 +16,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
+#include <limits>
 #include <random>
-#include <type_traits>
+
+#include "ulp.hpp"
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 #include <quadmath.h>
@@ -45,17 +46,7 @@ Oracle oracle_expm1(Oracle x) { return expm1l(x); }
 const char* const oracle_name = "long double";
 #endif
 
-/// Distance in ulps between two values of R of any sign (ordered bit patterns).
-template <class R>
-long long ulp_distance(R a, R b) {
-  using Bits = std::conditional_t<sizeof(R) == 4, std::int32_t, std::int64_t>;
-  Bits ia = 0, ib = 0;
-  std::memcpy(&ia, &a, sizeof a);
-  std::memcpy(&ib, &b, sizeof b);
-  const long long oa = ia < 0 ? -static_cast<long long>(ia & std::numeric_limits<Bits>::max()) : ia;
-  const long long ob = ib < 0 ? -static_cast<long long>(ib & std::numeric_limits<Bits>::max()) : ib;
-  return oa > ob ? oa - ob : ob - oa;
-}
+using pointmass::test::ulp_distance;
 
 struct Worst {
   long long ulps = 0;

@@ -258,24 +258,28 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R expm1_from(const ExpRedu
   return mask_select(less_mask(ExpTraits<R>::expm1_exact_scale, e.n), exp_from(e) - R(1), near);
 }
 
-/// e^x in R. Branch-free and constexpr for float and double; expl for long double.
-template <Real R>
-POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R exp(R x) noexcept {
+/// e^x (MinusOne false) or e^x - 1 (MinusOne true) in R: one reduction, then exp_from or
+/// expm1_from, branch-free and constexpr for float and double; expl / expm1l for long double.
+template <bool MinusOne, Real R>
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R exp_or_expm1(R x) noexcept {
   if constexpr (wider_than_double_v<R>) {
-    return real_exp(x);
+    return MinusOne ? real_expm1(x) : real_exp(x);
   } else {
-    return exp_from(exp_reduce(x, R(0)));
+    const ExpReduced<R> e = exp_reduce(x, R(0));
+    return MinusOne ? expm1_from(e) : exp_from(e);
   }
 }
 
-/// e^x - 1 in R, accurate near x = 0. Branch-free and constexpr for float and double.
+/// e^x in R.
+template <Real R>
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R exp(R x) noexcept {
+  return exp_or_expm1<false>(x);
+}
+
+/// e^x - 1 in R, accurate near x = 0.
 template <Real R>
 POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R expm1(R x) noexcept {
-  if constexpr (wider_than_double_v<R>) {
-    return real_expm1(x);
-  } else {
-    return expm1_from(exp_reduce(x, R(0)));
-  }
+  return exp_or_expm1<true>(x);
 }
 
 /// A step length split like split_log's hi: t = hi + lo, hi of half the significand (or t

@@ -139,13 +139,7 @@ class SystemKernel {
     if constexpr (!plain_positions) {  // stored wider or compensated (precision.hpp)
       bool movable = true;
       if constexpr (Layout::has_forces) {
-        const R inverse_mass = arrays.inverse_mass[i];
-        ax = ax + arrays.force_x[i] * inverse_mass;
-        ay = ay + arrays.force_y[i] * inverse_mass;
-        az = az + arrays.force_z[i] * inverse_mass;
-        arrays.force_x[i] = R(0);
-        arrays.force_y[i] = R(0);
-        arrays.force_z[i] = R(0);
+        const R inverse_mass = apply_forces(arrays, i, ax, ay, az);
         movable = inverse_mass > R(0);
       }
       advance_stored_if(movable, arrays.position_x[i], arrays.position_error_x, i,
@@ -155,13 +149,7 @@ class SystemKernel {
       advance_stored_if(movable, arrays.position_z[i], arrays.position_error_z, i,
                         arrays.velocity_z[i], az, t, factors);
     } else if constexpr (Layout::has_forces) {
-      const R inverse_mass = arrays.inverse_mass[i];
-      ax = ax + arrays.force_x[i] * inverse_mass;
-      ay = ay + arrays.force_y[i] * inverse_mass;
-      az = az + arrays.force_z[i] * inverse_mass;
-      arrays.force_x[i] = R(0);
-      arrays.force_y[i] = R(0);
-      arrays.force_z[i] = R(0);
+      const R inverse_mass = apply_forces(arrays, i, ax, ay, az);
       advance_if_movable(inverse_mass, arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
       advance_if_movable(inverse_mass, arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
       advance_if_movable(inverse_mass, arrays.position_z[i], arrays.velocity_z[i], az, t, factors);
@@ -247,6 +235,21 @@ class SystemKernel {
       static_cast<void>(i);
       return parameters.factors;
     }
+  }
+
+  // Adds the particle's accumulated force times its inverse mass to (ax, ay, az), clears the
+  // accumulator, and returns the inverse mass.
+  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr R apply_forces(const Arrays& arrays,
+                                                                      std::size_t i, R& ax,
+                                                                      R& ay, R& az) noexcept {
+    const R inverse_mass = arrays.inverse_mass[i];
+    ax = ax + arrays.force_x[i] * inverse_mass;
+    ay = ay + arrays.force_y[i] * inverse_mass;
+    az = az + arrays.force_z[i] * inverse_mass;
+    arrays.force_x[i] = R(0);
+    arrays.force_y[i] = R(0);
+    arrays.force_z[i] = R(0);
+    return inverse_mass;
   }
 
   // Both outcomes computed, one kept (inverse_mass > 0: movable): a select the vectoriser can

@@ -98,6 +98,16 @@ constexpr bool check_non_negative(const char* function, const char* argument, R 
   return false;
 }
 
+/// check_non_negative(function, argument, value) (>= 0 and finite), and on success
+/// `member = value`: the body of a generator's setter for a non-negative parameter.
+template <Real R>
+constexpr bool assign_non_negative(const char* function, const char* argument, R value,
+                                   R& member) {
+  if (!check_non_negative(function, argument, value)) return false;
+  member = value;
+  return true;
+}
+
 /// A number > 0 and finite.
 template <Real R>
 constexpr bool check_positive(const char* function, const char* argument, R value) {

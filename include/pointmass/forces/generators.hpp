@@ -101,10 +101,10 @@ class Drag {
   constexpr R k1() const noexcept { return k1_; }
   constexpr R k2() const noexcept { return k2_; }
   constexpr void set_k1(R k1) {
-    if (pointmass::detail::check_non_negative("Drag::set_k1", "k1", k1)) k1_ = k1;
+    pointmass::detail::assign_non_negative("Drag::set_k1", "k1", k1, k1_);
   }
   constexpr void set_k2(R k2) {
-    if (pointmass::detail::check_non_negative("Drag::set_k2", "k2", k2)) k2_ = k2;
+    pointmass::detail::assign_non_negative("Drag::set_k2", "k2", k2, k2_);
   }
 
   constexpr Vector3<R> force(const Vector3<R>&, const Vector3<R>& v, R, R) const noexcept {
@@ -132,12 +132,11 @@ class SpringParameters {
   constexpr R stiffness() const noexcept { return k_; }
   constexpr R rest_length() const noexcept { return rest_length_; }
   constexpr void set_stiffness(R stiffness) {
-    if (pointmass::detail::check_non_negative("set_stiffness", "stiffness", stiffness)) k_ = stiffness;
+    pointmass::detail::assign_non_negative("set_stiffness", "stiffness", stiffness, k_);
   }
   constexpr void set_rest_length(R rest_length) {
-    if (pointmass::detail::check_non_negative("set_rest_length", "rest_length", rest_length)) {
-      rest_length_ = rest_length;
-    }
+    pointmass::detail::assign_non_negative("set_rest_length", "rest_length", rest_length,
+                                           rest_length_);
   }
 
   /// The force on the end at p from the end at `other_position`.
@@ -251,12 +250,11 @@ class Buoyancy {
     }
   }
   constexpr void set_liquid_density(R density) {
-    if (pointmass::detail::check_non_negative("Buoyancy::set_liquid_density", "liquid_density", density)) {
-      density_ = density;
-    }
+    pointmass::detail::assign_non_negative("Buoyancy::set_liquid_density", "liquid_density",
+                                           density, density_);
   }
   constexpr void set_gravity(R g) {
-    if (pointmass::detail::check_non_negative("Buoyancy::set_gravity", "g", g)) g_ = g;
+    pointmass::detail::assign_non_negative("Buoyancy::set_gravity", "g", g, g_);
   }
 
   /// The submerged fraction s = ((h - y) / D + 1) / 2, clamped to [0, 1], at height y. (Not
