@@ -780,8 +780,33 @@ void fuzz_system(Input& in) {
         stepped = true;
         break;
       }
-      case 12:
-      case 22: {
+      case 22: {  // copy-out into a buffer of any length with any stride, huge ones included
+        const std::size_t length = in.byte() % 64;
+        const std::uint8_t kind = in.byte();
+        const std::size_t stride = kind % 3 == 0   ? std::size_t{kind} % 8
+                                   : kind % 3 == 1 ? std::numeric_limits<std::size_t>::max() - kind
+                                                   : std::size_t{in.word()};
+        std::vector<float> buffer(length, 7.0f);
+        system.copy_positions(std::span<float>(buffer), stride);
+        const std::size_t n = system.size();
+        const bool fits = n == 0 || (length >= 3 && (n == 1 || stride <= (length - 3) / (n - 1)));
+        if (stride < 3 || !fits) {
+          if (stride < 3) expect_rejected("copy_positions", "stride", stride);
+          else expect_rejected("copy_positions", "out", length);
+          for (const float x : buffer) require(x == 7.0f, "a refused copy-out wrote");
+        } else {
+          expect_accepted("copy_positions");
+          for (std::size_t i = 0; i < n; ++i) {
+            const auto p = system.position(i);
+            const float expected[3] = {static_cast<float>(p.x), static_cast<float>(p.y),
+                                       static_cast<float>(p.z)};
+            require(std::memcmp(&buffer[i * stride], expected, sizeof expected) == 0,
+                    "copy-out differs from the positions");
+          }
+        }
+        break;
+      }
+      case 12: {
         const R t = in.number<R>();
         const int count = in.byte() % 9;
         for (int k = 0; k < (count == 0 ? 1 : count); ++k) {
@@ -1349,13 +1374,24 @@ using MoreSystemConfigs = std::tuple<
     SystemConfig<ParticleSystem<R, damping::None, position::Euler, features::ForceAccumulator,
                                  features::Lifetime>>>;
 
+// The game features (previous positions, handles, a user column): no physics of their own,
+// so every invariant above holds with them; after the others, as above.
+struct FuzzOwner {};
+template <class R>
+using GameSystemConfigs = std::tuple<
+    SystemConfig<ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
+                                 features::Interpolation, features::Handles,
+                                 features::Column<FuzzOwner, int>>>>;
+
 template <class... A, class... B>
 auto concatenate(std::tuple<A...>, std::tuple<B...>) -> std::tuple<A..., B...>;
 using Configs = decltype(concatenate(
     concatenate(
         concatenate(std::declval<ParticleConfigs<float>>(), std::declval<ParticleConfigs<double>>()),
         concatenate(std::declval<SystemConfigs<float>>(), std::declval<SystemConfigs<double>>())),
-    concatenate(std::declval<MoreSystemConfigs<float>>(), std::declval<MoreSystemConfigs<double>>())));
+    concatenate(
+        concatenate(std::declval<MoreSystemConfigs<float>>(), std::declval<MoreSystemConfigs<double>>()),
+        concatenate(std::declval<GameSystemConfigs<float>>(), std::declval<GameSystemConfigs<double>>()))));
 static_assert(std::tuple_size_v<Configs> < 0xF0, "the first bytes from 0xF0 choose the forces");
 
 template <std::size_t... I>
