@@ -137,6 +137,7 @@ struct Show {
     for (const Burst& burst : bursting) {
       bool burst_any = false;
       for (const Payload& payload : rules[static_cast<std::size_t>(burst.type - 1)].payloads) {
+        if (payload.count == 0) continue;  // no payload (and type 0, which names no system)
         Sparks& children = sparks[static_cast<std::size_t>(payload.type - 1)];
         for (int n = 0; n < payload.count; ++n) {
           create(payload.type, burst.position, burst.velocity, burst.colour);
