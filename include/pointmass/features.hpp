@@ -97,6 +97,7 @@ enum class Column : unsigned char {
   damping,
   damping_log_hi,
   damping_log_lo,
+  damping_retention,  ///< d^t for the last step's length (PerSecond, AccelerateThenDamp)
   age,
   lifetime,
   previous_position_x,
@@ -229,6 +230,7 @@ T element_of(T* Class::*);
   X(damping,            damping_column_t, per_particle_damping) \
   X(damping_log_hi,     R,              per_particle_log_damping) \
   X(damping_log_lo,     R,              per_particle_log_damping) \
+  X(damping_retention,  R,              per_particle_retention) \
   X(age,                R,              has_lifetime)           \
   X(lifetime,           R,              has_lifetime)           \
   X(previous_position_x, position_element, has_interpolation)   \
@@ -271,6 +273,13 @@ struct SystemLayout {
       log_damping_state || std::is_same_v<damping_state, damping::StoredDamping<R>>;
   static constexpr bool per_particle_log_damping = per_particle_damping && log_damping_state;
   using damping_column_t = std::conditional_t<value_damping_state, R, damping_state>;
+  /// Per-particle PerSecond and AccelerateThenDamp damping also keep each particle's d^t for
+  /// the last step's length (`damping_retention`): a run of steps of one length (a fixed
+  /// step) computes no exponential and reads 4 bytes instead of d and ln d; a new length
+  /// refreshes the column first (ParticleSystem::step, StepParameters::refresh).
+  static constexpr bool per_particle_retention =
+      per_particle_damping && (std::is_same_v<D, damping::PerSecond> ||
+                               std::is_same_v<D, damping::AccelerateThenDamp>);
   static constexpr bool per_particle_acceleration =
       contains_v<features::PerParticleAcceleration, Features...>;
   static constexpr bool has_forces = contains_v<features::ForceAccumulator, Features...>;
@@ -313,11 +322,12 @@ struct SystemLayout {
     }
   }
   /// True for the columns that hold parts of a damping state that must agree with each
-  /// other (d and ln d): ParticleSystem::column gives them read-only.
+  /// other (d, ln d and d^t): ParticleSystem::column gives them read-only.
   template <Column C>
-  static constexpr bool read_only = log_damping_state && (C == Column::damping ||
-                                                          C == Column::damping_log_hi ||
-                                                          C == Column::damping_log_lo);
+  static constexpr bool read_only = C == Column::damping_retention ||
+                                    (log_damping_state && (C == Column::damping ||
+                                                           C == Column::damping_log_hi ||
+                                                           C == Column::damping_log_lo));
   /// The element type of user column I.
   template <std::size_t I>
   using user_element_t = typename std::tuple_element_t<I, user_columns>::type;

@@ -239,6 +239,7 @@ class KokkosSystem {
       using T = std::remove_pointer_t<decltype(to)>;
       Kokkos::deep_copy(HostUnmanaged<T>(to, count), Unmanaged<T>(from, count));
     });
+    system.arrays_changed();
     copy_uniform(settings_, system);
   }
 

@@ -332,7 +332,7 @@ class ParticleSystem
   {
     if (detail::check_index("set_damping", i, size()) &&
         detail::check_damping("set_damping", damping)) {
-      Layout::store_damping(arrays(), i, damping_state(damping));
+      State::store_damping(i, damping_state(damping));
     }
   }
 
@@ -567,7 +567,10 @@ class ParticleSystem
   /// checked when POINTMASS_CHECKS is on; zero changes nothing. Allocates nothing.
   void step(R duration) {
     if constexpr (PositionPolicyFor<P, D>) {  // else the static_assert above has said why
-      if (State::walk(duration)) finish_step();
+      if (State::walk(duration)) {
+        typename State::NoCallback none;
+        State::expire(none);
+      }
     }
   }
   /// As step(duration), calling on_expire(i) for each particle whose lifetime is over, once,
@@ -590,6 +593,12 @@ class ParticleSystem
   // with step_particle(arrays(), i, step_parameters(t)) for i < size(), after begin_step(t)
   // said there is work, then call finish_step() on the host to expire particles.
 
+  /// Says that the arrays were written from outside (through arrays(): a device's results
+  /// copied back): the next step recomputes what the system keeps between steps (each
+  /// particle's d^t for the last step length, with per-particle PerSecond or
+  /// AccelerateThenDamp damping). finish_step() says it too.
+  void arrays_changed() noexcept { State::forget_retention(); }
+
   /// What every particle's step of `duration` shares: computes the uniform damping factors
   /// (the one power function of a step with uniform per-second damping).
   using State::step_parameters;
@@ -598,6 +607,7 @@ class ParticleSystem
   /// After the particles have stepped: removes those whose age reached their (finite)
   /// lifetime. Called by step.
   void finish_step() {
+    arrays_changed();
     typename State::NoCallback none;
     State::expire(none);
   }
@@ -605,6 +615,7 @@ class ParticleSystem
   template <class OnExpire>
     requires(has_lifetime && std::is_invocable_v<OnExpire&, std::size_t>)
   void finish_step(OnExpire&& on_expire) {
+    arrays_changed();
     State::expire(on_expire);
   }
   /// True when a particle of this `age` and `lifetime` has expired: its age reached a finite

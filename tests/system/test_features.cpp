@@ -78,12 +78,12 @@ TEST_CASE_TEMPLATE("each feature stores its arrays, and nothing else", R, float,
   static_assert(Bare::storage_bytes_per_particle == 6 * sizeof(R));
   static_assert(Sparks::storage_bytes_per_particle == 6 * sizeof(R));
   // Per-second damping stores d and ln d as hi + lo (no logarithm a step), as Exact does.
-  static_assert(Damped::storage_bytes_per_particle == 9 * sizeof(R));
+  static_assert(Damped::storage_bytes_per_particle == 10 * sizeof(R));
   static_assert(ExactDamped::storage_bytes_per_particle == 9 * sizeof(R));
   static_assert(Accelerated::storage_bytes_per_particle == 9 * sizeof(R));
   static_assert(Forced::storage_bytes_per_particle == 10 * sizeof(R));
   static_assert(Aging::storage_bytes_per_particle == 8 * sizeof(R));
-  static_assert(Everything::storage_bytes_per_particle == 18 * sizeof(R));
+  static_assert(Everything::storage_bytes_per_particle == 19 * sizeof(R));
 
   // The accessors of what is not stored do not exist.
   static_assert(!requires(Bare& s) { s.template column<Column::acceleration_x>(); });
@@ -139,8 +139,8 @@ TEST_CASE_TEMPLATE("arrays share one block, 64-byte aligned, staggered within th
     CAPTURE(capacity);
     ParticleSystem<R> sparks(capacity);
     Everything everything(capacity);
-    static_assert(Everything::array_count == 18);  // the damping state in three columns
-    for (const std::size_t arrays : {std::size_t{6}, std::size_t{18}}) {
+    static_assert(Everything::array_count == 19);  // the damping state in three columns, d^t
+    for (const std::size_t arrays : {std::size_t{6}, std::size_t{19}}) {
       CAPTURE(arrays);
       const auto& a = sparks.arrays();
       const auto& b = everything.arrays();
@@ -154,8 +154,8 @@ TEST_CASE_TEMPLATE("arrays share one block, 64-byte aligned, staggered within th
         for (const R* p :
              {b.position_x, b.position_y, b.position_z, b.velocity_x, b.velocity_y, b.velocity_z,
               b.acceleration_x, b.acceleration_y, b.acceleration_z, b.inverse_mass, b.force_x,
-              b.force_y, b.force_z, b.damping, b.damping_log_hi, b.damping_log_lo, b.age,
-              b.lifetime}) {
+              b.force_y, b.force_z, b.damping, b.damping_log_hi, b.damping_log_lo,
+              b.damping_retention, b.age, b.lifetime}) {
           starts.push_back(reinterpret_cast<std::uintptr_t>(p));
         }
       }

@@ -70,6 +70,11 @@ class SystemKernel {
     [[no_unique_address]] std::conditional_t<Layout::per_particle_damping, NoFactors,
                                              damping_factors> factors{};
     Vector3<R> acceleration{};
+    /// With the damping_retention column (features.hpp): compute each particle's d^t for
+    /// this duration and keep it, before its step. True unless the system knows the column
+    /// holds d^t for this duration already (ParticleSystem::step_parameters says), so a
+    /// loop of one's own that builds its parameters itself is always right.
+    bool refresh = true;
   };
 
   /// False when a step calls a power function per particle: per-particle damping with
@@ -78,7 +83,8 @@ class SystemKernel {
   /// exponential (detail/exponential.hpp). Only a vectorisable loop is marked for
   /// vectorisation.
   static constexpr bool vectorisable =
-      !Layout::per_particle_damping || std::is_same_v<D, damping::PerFrame> ||
+      !Layout::per_particle_damping || Layout::per_particle_retention ||
+      std::is_same_v<D, damping::PerFrame> ||
       ((std::is_same_v<D, damping::PerSecond> || std::is_same_v<D, damping::Exact>) &&
        !wider_than_double_v<R>);
 
@@ -118,6 +124,24 @@ class SystemKernel {
   /// 0 does not move. Plain arithmetic on the arrays: runs on a GPU as it runs here (see
   /// docs/hardening.md for the compiler settings under which a device gives the same bits).
   POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void step_particle(
+      const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
+    if constexpr (Layout::per_particle_retention) {
+      if (parameters.refresh) refresh_retention(arrays, i, parameters.duration);
+    }
+    step_kept(arrays, i, parameters);
+  }
+
+  /// Particle i's d^t for a step of `duration`, kept in the damping_retention column.
+  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void refresh_retention(
+      const Arrays& arrays, std::size_t i, R duration) noexcept {
+    if constexpr (Layout::per_particle_retention) {
+      arrays.damping_retention[i] = D::factors(Layout::load_damping(arrays, i), duration).kept;
+    }
+  }
+
+ private:
+  // step_particle once the retention column (if any) holds d^t for this duration.
+  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void step_kept(
       const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
     const R t = parameters.duration;
     if constexpr (Layout::has_interpolation) {  // the position before this step, for drawing
@@ -161,6 +185,7 @@ class SystemKernel {
     if constexpr (Layout::has_lifetime) arrays.age[i] += t;
   }
 
+ public:
 #if defined(__clang__)
 #pragma clang diagnostic push
   // Some configurations do not vectorise (a power function per particle; clang 14 also
@@ -214,13 +239,27 @@ class SystemKernel {
                                                    std::size_t count,
                                                    const StepParameters& parameters) noexcept {
     const std::size_t blocked = count & ~(vector_block - 1);
+    if constexpr (Layout::per_particle_retention) {
+      // A new step length: each particle's d^t first, in a loop of its own (vectorised for
+      // PerSecond; AccelerateThenDamp's powf is a call), so that the step's loop stays one.
+      if (parameters.refresh) {
+        const R t = parameters.duration;
+        if constexpr (std::is_same_v<D, damping::PerSecond> && !wider_than_double_v<R>) {
+          POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
+          for (std::size_t k = 0; k < blocked; ++k) refresh_retention(arrays, first + k, t);
+        } else {
+          for (std::size_t k = 0; k < blocked; ++k) refresh_retention(arrays, first + k, t);
+        }
+        for (std::size_t k = blocked; k < count; ++k) refresh_retention(arrays, first + k, t);
+      }
+    }
     if constexpr (vectorisable) {
       POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
-      for (std::size_t k = 0; k < blocked; ++k) step_particle(arrays, first + k, parameters);
+      for (std::size_t k = 0; k < blocked; ++k) step_kept(arrays, first + k, parameters);
     } else {  // a power function per particle: no vector loop to ask for
-      for (std::size_t k = 0; k < blocked; ++k) step_particle(arrays, first + k, parameters);
+      for (std::size_t k = 0; k < blocked; ++k) step_kept(arrays, first + k, parameters);
     }
-    for (std::size_t k = blocked; k < count; ++k) step_particle(arrays, first + k, parameters);
+    for (std::size_t k = blocked; k < count; ++k) step_kept(arrays, first + k, parameters);
   }
 #if defined(__clang__)
 #pragma clang diagnostic pop
@@ -228,7 +267,9 @@ class SystemKernel {
 
   POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr auto factors_of(
       const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
-    if constexpr (Layout::per_particle_damping) {
+    if constexpr (Layout::per_particle_retention) {
+      return damping_factors{arrays.damping_retention[i]};
+    } else if constexpr (Layout::per_particle_damping) {
       return D::factors(Layout::load_damping(arrays, i), parameters.duration);
     } else {
       static_cast<void>(arrays);

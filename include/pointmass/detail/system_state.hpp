@@ -78,13 +78,15 @@ class SystemState {
       : block_(other.block_.with_capacity(other.capacity())),
         damping_(other.damping_),
         acceleration_(other.acceleration_),
-        handles_(other.handles_) {}
+        handles_(other.handles_),
+        retention_duration_(other.retention_duration_) {}
   SystemState(SystemState&& other) noexcept
       : block_(std::move(other.block_)),
         backward_(std::exchange(other.backward_, false)),
         damping_(other.damping_),
         acceleration_(other.acceleration_),
-        handles_(std::move(other.handles_)) {}
+        handles_(std::move(other.handles_)),
+        retention_duration_(other.retention_duration_) {}
   SystemState& operator=(const SystemState&) = delete;  // the system assigns by swap
   SystemState& operator=(SystemState&&) = delete;
   ~SystemState() = default;
@@ -95,6 +97,7 @@ class SystemState {
     std::swap(damping_, other.damping_);
     std::swap(acceleration_, other.acceleration_);
     std::swap(handles_, other.handles_);
+    std::swap(retention_duration_, other.retention_duration_);
   }
 
   Block block_;
@@ -103,6 +106,8 @@ class SystemState {
   [[no_unique_address]] damping_state damping_{};
   Vector3<R> acceleration_{};
   [[no_unique_address]] Table handles_{};
+  // The step length the damping_retention column holds d^t for (features.hpp); -1: none.
+  R retention_duration_ = R(-1);
 
   // --- size and capacity ---------------------------------------------------------------------
 
@@ -183,7 +188,7 @@ class SystemState {
       a.inverse_mass[i] = R(1);
       store(a.force_x, a.force_y, a.force_z, i, {});
     }
-    if constexpr (Layout::per_particle_damping) Layout::store_damping(a, i, damping_state{});
+    if constexpr (Layout::per_particle_damping) store_damping(i, damping_state{});
     if constexpr (Layout::has_lifetime) {
       a.age[i] = R(0);
       a.lifetime[i] = real_infinity<R>;
@@ -210,8 +215,14 @@ class SystemState {
       a.inverse_mass[i] = particle.inverse_mass();
       store(a.force_x, a.force_y, a.force_z, i, particle.force_accumulator());
     }
-    if constexpr (Layout::per_particle_damping) {
-      Layout::store_damping(a, i, damping_state(particle.damping()));
+    if constexpr (Layout::per_particle_damping) store_damping(i, damping_state(particle.damping()));
+  }
+  // Particle i's damping state, and its d^t for the kept step length (the same function
+  // and inputs as the step's refresh, so the same bits).
+  void store_damping(std::size_t i, const damping_state& state) noexcept {
+    Layout::store_damping(arrays(), i, state);
+    if constexpr (Layout::per_particle_retention) {
+      if (retention_duration_ >= R(0)) Kernel::refresh_retention(arrays(), i, retention_duration_);
     }
   }
   // The user columns of particle i: the values given, or T{} for each when none are.
@@ -334,6 +345,9 @@ class SystemState {
       parameters.factors = D::factors(damping_, duration);
     }
     parameters.acceleration = acceleration_;
+    if constexpr (Layout::per_particle_retention) {
+      parameters.refresh = !real_equal(duration, retention_duration_);
+    }
     return parameters;
   }
   bool begin_step(R duration) const {
@@ -342,6 +356,11 @@ class SystemState {
 #endif
     return !real_equal(duration, R(0)) && size() != 0;
   }
+  // The damping_retention column may no longer hold d^t for retention_duration_ (written
+  // from outside, or stepped by a loop of the caller's): the next step recomputes it.
+  void forget_retention() noexcept {
+    if constexpr (Layout::per_particle_retention) retention_duration_ = R(-1);
+  }
   // Steps every particle, walking in the direction due; false when there was nothing to do.
   bool walk(R duration) {
     if (!begin_step(duration)) return false;
@@ -349,6 +368,7 @@ class SystemState {
     (backward_ ? Kernel::step_range_backward : Kernel::step_range)(arrays(), 0, size(),
                                                                    parameters);
     backward_ = !backward_ && Kernel::alternates(size());
+    if constexpr (Layout::per_particle_retention) retention_duration_ = duration;
     return true;
   }
 
