@@ -218,7 +218,7 @@ class ParticleSystem
   /// spawn(arguments...), returning the new particle's handle (a default Handle, which
   /// finds nothing, when the input was rejected).
   template <class... Arguments>
-    requires(has_handles && requires(ParticleSystem& s, const Arguments&... a) { s.spawn(a...); })
+    requires has_handles
   Handle spawn_handle(const Arguments&... arguments) {
     const std::size_t i = spawn(arguments...);
     return i == npos ? Handle{} : handle(i);
