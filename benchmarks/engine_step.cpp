@@ -246,9 +246,10 @@ struct UniformDampingFeatured {
                                 features::PerParticleAcceleration, features::ForceAccumulator>;
 };
 
-// The full-featured system's memory traffic with trivial arithmetic: every array it reads (16:
-// position, velocity, acceleration, inverse mass, force, d and ln d's two parts) read, the 9 it
-// writes (position, velocity, force) written, in its own block: the bound of its step.
+// The full-featured system's memory traffic at a fixed step with trivial arithmetic: every
+// array it reads (14: position, velocity, acceleration, inverse mass, force, and each
+// particle's d^t kept for the step length) read, the 9 it writes (position, velocity, force)
+// written, in its own block: the bound of its step.
 template <class R>
 void BM_BandwidthFullFeatured(benchmark::State& state) {
   using System = typename FullFeatured<R>::System;
@@ -271,17 +272,14 @@ void BM_BandwidthFullFeatured(benchmark::State& state) {
     const R* __restrict ay = a.acceleration_y;
     const R* __restrict az = a.acceleration_z;
     const R* __restrict im = a.inverse_mass;
-    const R* __restrict d = a.damping;
-    const R* __restrict hi = a.damping_log_hi;
-    const R* __restrict lo = a.damping_log_lo;
+    const R* __restrict kept = a.damping_retention;
 #if defined(__clang__)
 #pragma clang loop vectorize(assume_safety)
 #elif defined(__GNUC__)
 #pragma GCC ivdep
 #endif
     for (std::size_t i = 0; i < count; ++i) {
-      const R k = (ax[i] + ay[i]) + (az[i] + im[i]) + ((d[i] + hi[i]) + lo[i]) +
-                  ((fx[i] + fy[i]) + fz[i]);
+      const R k = (ax[i] + ay[i]) + (az[i] + im[i]) + kept[i] + ((fx[i] + fy[i]) + fz[i]);
       px[i] += c * k;
       py[i] += c * k;
       pz[i] += c * k;

@@ -77,7 +77,8 @@ TEST_CASE_TEMPLATE("each feature stores its arrays, and nothing else", R, float,
 
   static_assert(Bare::storage_bytes_per_particle == 6 * sizeof(R));
   static_assert(Sparks::storage_bytes_per_particle == 6 * sizeof(R));
-  // Per-second damping stores d and ln d as hi + lo (no logarithm a step), as Exact does.
+  // Per-second damping stores d and ln d as hi + lo (no logarithm a step), as Exact does, and
+  // d^t for the last step length (no exponential a fixed step).
   static_assert(Damped::storage_bytes_per_particle == 10 * sizeof(R));
   static_assert(ExactDamped::storage_bytes_per_particle == 9 * sizeof(R));
   static_assert(Accelerated::storage_bytes_per_particle == 9 * sizeof(R));
