@@ -341,8 +341,8 @@ class SystemState {
   StepParameters step_parameters(R duration) const noexcept {
     StepParameters parameters{};
     parameters.duration = duration;
-    if constexpr (!Layout::per_particle_damping) {
-      parameters.factors = D::factors(damping_, duration);
+    if constexpr (!Layout::per_particle_damping) {  // once a step: the scalar form, same bits
+      parameters.factors = scalar_factors<D>(damping_, duration);
     }
     parameters.acceleration = acceleration_;
     if constexpr (Layout::per_particle_retention) {
@@ -399,8 +399,10 @@ class SystemState {
         const R* age = arrays().age;
         const R* lifetime = arrays().lifetime;
         if (i % block == 0 && i + block <= size()) {
+          // age >= lifetime is all an expiry needs (and a plain comparison vectorises); the
+          // particle test below then leaves infinite lifetimes alone.
           bool any_expired = false;
-          for (std::size_t k = i; k < i + block; ++k) any_expired |= expired(age[k], lifetime[k]);
+          for (std::size_t k = i; k < i + block; ++k) any_expired |= age[k] >= lifetime[k];
           if (!any_expired) {
             i += block;
             continue;
