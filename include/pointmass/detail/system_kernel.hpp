@@ -77,11 +77,11 @@ class SystemKernel {
     bool refresh = true;
   };
 
-  /// False when a step calls a power function per particle: per-particle damping with
-  /// damping::AccelerateThenDamp (powf / pow, to reproduce the reference engine) or a policy
-  /// of the user's. PerFrame needs no function, PerSecond and Exact the library's branch-free
-  /// exponential (detail/exponential.hpp). Only a vectorisable loop is marked for
-  /// vectorisation.
+  /// False when a step calls a power function per particle: per-particle damping with a
+  /// policy of the user's. PerFrame needs no function, Exact the library's branch-free
+  /// exponential (detail/exponential.hpp), and PerSecond and AccelerateThenDamp read the d^t
+  /// kept for the step length (refreshed in a loop of its own: AccelerateThenDamp's powf does
+  /// not vectorise there). Only a vectorisable loop is marked for vectorisation.
   static constexpr bool vectorisable =
       !Layout::per_particle_damping || Layout::per_particle_retention ||
       std::is_same_v<D, damping::PerFrame> ||
