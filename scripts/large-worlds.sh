@@ -27,7 +27,9 @@ median_table "$json" "$repetitions" >"$cost" <<'PY'
 print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; medians of "
       f"{sys.argv[2]} interleaved repetitions (`scripts/large-worlds.sh {sys.argv[2]}`); "
       "`ParticleSystem::step`, M particle-steps/s, and the cost against all-float in the same "
-      "run (time per step / all-float's).\n")
+      "run (time per step / all-float's). The rows \"by hand\" are the sparks' arithmetic "
+      "written as a plain loop over arrays of each storage, in the same run: what the "
+      "storage itself costs on this machine, the bound for the rows above them.\n")
 sizes = ("1000", "100000", "10000000")
 targets = {"Double": ("<= 1.15", "<= 1.50", "<= 1.50"),
            "Compensated": ("<= 1.30", "<= 1.50", "<= 1.50")}
@@ -43,6 +45,16 @@ for kind, title in (("Sparks", "sparks: per-second damping, p + v t, gravity"),
         costs = [f"{rate[f'BM_Step<Float{kind}>/{n}'] / rate[f'{name}/{n}']:.2f}" for n in sizes]
         target = " / ".join(targets[variant]) if variant in targets and kind == "Sparks" else ""
         print(f"| {label} | {size} | " + " | ".join(cells) + " | " + " | ".join(costs) + f" | {target} |")
+    if kind == "Sparks":
+        # The bound: the same arithmetic written by hand over plain arrays of each storage.
+        for variant, label, size in (("float", "by hand: float positions", 24),
+                                     ("double", "by hand: double positions", 36),
+                                     ("compensated", "by hand: float pair (TwoSum)", 36)):
+            name = f"BM_HandSparks<Storage::{variant}_positions>"
+            base = "BM_HandSparks<Storage::float_positions>"
+            cells = [f"{rate[f'{name}/{n}']:,.0f}" for n in sizes]
+            costs = [f"{rate[f'{base}/{n}'] / rate[f'{name}/{n}']:.2f}" for n in sizes]
+            print(f"| {label} | {size} | " + " | ".join(cells) + " | " + " | ".join(costs) + " | the bound |")
     print()
 PY
 publish_table "$doc" cost "$cost"
