@@ -83,7 +83,7 @@ for real in ("float", "double"):
          f"BM_Particles<{real}, damping::AccelerateThenDamp, position::Euler, false>", engine, ">= 1.0")
     line("`Particle<R, AccelerateThenDamp, Euler>` changing step / engine changing step",
          f"BM_Particles<{real}, damping::AccelerateThenDamp, position::Euler, true>", engine_varying,
-         "(not a target)")
+         ">= 1.0")
     line("full-featured system / engine", f"BM_System<FullFeatured<{real}>>", engine,
          ">= 10, 4, 2 (float); >= 5, 2 (double)")
     line("full-featured system / the same with uniform damping", f"BM_System<FullFeatured<{real}>>",
@@ -101,5 +101,61 @@ for real in ("float", "double"):
          f"BM_BandwidthBytes<{real}, sizeof(Particle<{real}>)>",
          f"BM_BandwidthBytes<{real}, sizeof(HandParticle<{real}>)>", "(the bytes' ratio)", big)
     print()
+
+# Each target of the reference engine's job against this run: (what, real, numerator,
+# denominator, sizes, the least ratio that meets it). A time target ("at most 1.03x the time")
+# is the rate ratio's reciprocal.
+def particles_of(real, damping, varying):
+    return f"BM_Particles<{real}, damping::{damping}, position::Euler, {'true' if varying else 'false'}>"
+def engine_of(real, varying):
+    return f"BM_Engine<{real}, {'true' if varying else 'false'}>"
+targets = [
+    ("full-featured system over the engine", "float", "BM_System<FullFeatured<float>>",
+     engine_of("float", False), (("1024", 10.0), ("100000", 4.0), ("1000000", 2.0))),
+    ("per-particle damping: time at most 1.5x uniform damping's", "float",
+     "BM_System<FullFeatured<float>>", "BM_System<UniformDampingFeatured<float>>",
+     (("100000", 1 / 1.5),)),
+    ("`Particle<float>` at a fixed step over the engine", "float",
+     particles_of("float", "PerSecond", False), engine_of("float", False),
+     (("1024", 2.5), ("100000", 2.5))),
+    ("`Particle<float>`, length changing every step, over the engine", "float",
+     particles_of("float", "PerSecond", True), engine_of("float", True),
+     tuple((n, 1.0) for n in sizes)),
+    ("`Particle<float>`: time at most 1.03x the hand-written loop of the same arithmetic", "float",
+     particles_of("float", "PerSecond", False), "BM_HandSameData<float>",
+     tuple((n, 1 / 1.03) for n in sizes)),
+]
+for real in ("float", "double"):
+    for varying, kind in ((False, "fixed step"), (True, "length changing every step")):
+        targets.append((f"`Particle<{real}, AccelerateThenDamp, Euler>` over the engine, {kind}", real,
+                        particles_of(real, "AccelerateThenDamp", varying), engine_of(real, varying),
+                        tuple((n, 1.0) for n in sizes)))
+targets += [
+    ("double: full-featured system over the engine", "double", "BM_System<FullFeatured<double>>",
+     engine_of("double", False), (("1024", 5.0), ("100000", 2.0))),
+    ("double: `Particle` at a fixed step over the engine", "double",
+     particles_of("double", "PerSecond", False), engine_of("double", False),
+     tuple((n, 2.0) for n in sizes)),
+]
+print("### Against the targets\n")
+print("Ratios of rates (higher is faster) from the tables above; a time target is shown as its "
+      "rate ratio (time at most 1.5x: rate ratio at least 0.67).\n")
+print("| target | sizes | measured | least | |\n|---|---|---|---|---|")
+for what, real, a, b, at in targets:
+    measured, verdicts = [], []
+    for n, least in at:
+        key, base_key = f"{a}/{n}", f"{b}/{n}"
+        if key not in rate or base_key not in rate:
+            measured.append("-")
+            verdicts.append(False)
+            continue
+        r = rate[key] / rate[base_key]
+        measured.append(f"{r:.2f}")
+        verdicts.append(r >= least)
+    labels = ", ".join(f"{int(n):,}" for n, _ in at)
+    leasts = ", ".join(f"{least:.2f}" for _, least in at)
+    verdict = "met" if all(verdicts) else "**missed**"
+    print(f"| {what} | {labels} | {', '.join(measured)} | {leasts} | {verdict} |")
+print()
 PY
 publish_table "$POINTMASS_ROOT/docs/performance.md" engine "$tables"
