@@ -155,6 +155,24 @@ struct Retention {
   R kept;  ///< fraction of the velocity kept over the step (d^t, or d per frame)
 };
 
+}  // namespace pointmass::damping
+
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
+/// What damping::PerFrame and damping::PerSecond share: one factor a step (Retention), applied to the velocity
+/// before the acceleration is added: v1 = v0 kept + a t.
+struct DampThenAccelerate {
+  template <Real R>
+  using Factors = damping::Retention<R>;
+  template <class V, class A, class T, class R>
+  POINTMASS_HD static constexpr V velocity(const V& v0, const A& a, const T& t,
+                                           const Factors<R>& f) noexcept {
+    return v0 * f.kept + a * t;
+  }
+};
+}  // namespace pointmass::detail
+
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::damping {
+
 /// No damping: v1 = v0 + a t. Stores nothing and calls no power function.
 /// Exact for constant acceleration; the cheapest update, for very large particle counts.
 struct None {
@@ -184,24 +202,17 @@ struct None {
 /// Removes the same fraction each step whatever its length, so drag changes with the frame
 /// rate (continuous model: rate ln(d) / t). First order. No power function: meant for
 /// thousands of sparks at a fixed frame rate.
-struct PerFrame {
+struct PerFrame : detail::DampThenAccelerate {
   /// Global order of accuracy against the continuous model; the model itself changes with the frame rate.
   static constexpr int order = 1;
   /// True when v1 is the continuous model's exact velocity under constant acceleration.
   static constexpr bool exact_for_constant_acceleration = false;
   template <Real R>
   using State = StoredDamping<R>;
-  template <Real R>
-  using Factors = Retention<R>;
 
   template <Real R, class T>
   POINTMASS_HD static constexpr Factors<R> factors(const State<R>& state, const T&) noexcept {
     return {state.value()};
-  }
-  template <class V, class A, class T, class R>
-  POINTMASS_HD static constexpr V velocity(const V& v0, const A& a, const T& t,
-                                           const Factors<R>& f) noexcept {
-    return v0 * f.kept + a * t;
   }
 };
 
@@ -209,15 +220,13 @@ struct PerFrame {
 /// d is the fraction kept per second, so damping alone is frame-rate independent (one step
 /// of 2t equals two of t). First order in the acceleration term. One exponential a step,
 /// d^t = e^(t ln d), the library's own (ln d is stored with d; long double calls powl).
-struct PerSecond {
+struct PerSecond : detail::DampThenAccelerate {
   /// Global order of accuracy against the continuous model; exact without acceleration.
   static constexpr int order = 1;
   /// True when v1 is the continuous model's exact velocity under constant acceleration.
   static constexpr bool exact_for_constant_acceleration = false;
   template <Real R>
   using State = LogDamping<R>;
-  template <Real R>
-  using Factors = Retention<R>;
 
   template <Real R, class T>
   POINTMASS_DETAIL_FACTORS_INLINE POINTMASS_HD static constexpr Factors<R> factors(
@@ -238,11 +247,6 @@ struct PerSecond {
     } else {
       return {detail::pow_unit_scalar(state.split_log(), in_seconds(t))};
     }
-  }
-  template <class V, class A, class T, class R>
-  POINTMASS_HD static constexpr V velocity(const V& v0, const A& a, const T& t,
-                                           const Factors<R>& f) noexcept {
-    return v0 * f.kept + a * t;
   }
 };
 
