@@ -22,16 +22,27 @@
 // >= size() is undefined behaviour, as for std::vector::operator[]. Bad values are reported
 // (config.hpp) and change nothing. `step` never allocates.
 //
-// Owns: the public API. Below it: features.hpp (the tags and the table of arrays),
-// detail/system_state.hpp (what the system holds, and how each call works),
+// Members by header. Here: the types and traits, construction and capacity, the uniform
+// values, spawning and killing, each particle's position, velocity, acceleration and
+// damping, arrays() and the step. The rest come from the facets, empty public bases (each
+// documents its members where it lives):
+//   system/columns.hpp            column<C>(), position_x() ... velocity_z(), and the user
+//                                 columns: column<Tag>(), column<Tag>(i), set_column<Tag>
+//   system/handles.hpp            Handle, handle, find, contains, handle_table_bytes
+//   system/force_accumulator.hpp  inverse_mass, force_accumulator, set_mass,
+//                                 set_inverse_mass, add_force
+//   system/lifetime.hpp           age, lifetime, set_lifetime
+//   system/interpolation.hpp      previous_position, interpolated_position,
+//                                 copy_interpolated_positions
+//   system/hand_off.hpp           copy_positions, positions_relative_to, position_relative_to
+//
+// Owns: the public API and the line of facets. Below it: features.hpp (the tags and the table
+// of arrays), detail/system_state.hpp (what the system holds, and how each call works),
 // detail/soa_block.hpp (the one allocation), detail/system_kernel.hpp (the step loop).
 // Must not include: <execution> or anything that starts threads (parallel.hpp adds those).
 #pragma once
 
 #include <cstddef>
-#include <cstdint>
-#include <optional>
-#include <span>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -45,24 +56,38 @@
 #include "particle.hpp"
 #include "position.hpp"
 #include "real.hpp"
+#include "system/columns.hpp"
+#include "system/force_accumulator.hpp"
+#include "system/hand_off.hpp"
+#include "system/handles.hpp"
+#include "system/interpolation.hpp"
+#include "system/lifetime.hpp"
 #include "vector3.hpp"
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
+
+namespace detail {
+// The facets, each over the one before it and the first over the state: one line of bases,
+// in which every facet is empty (a system is as big as its state).
+template <class State>
+using SystemFacets = SystemHandOff<SystemInterpolation<
+    SystemLifetime<SystemForceAccumulator<SystemHandles<SystemColumns<State>>>>>>;
+}  // namespace detail
 
 template <class S, DampingPolicy D = damping::PerSecond, class P = position::Euler,
           class... Features>
   requires(Real<S> || PrecisionChoice<S>) && (detail::is_feature_v<Features> && ...)
 class ParticleSystem
     : public detail::SystemKernel<real_of_t<S>, D, P, detail::SystemLayout<S, D, Features...>>,
-      private detail::SystemState<S, D, P, Features...> {
+      public detail::SystemFacets<detail::SystemStateBase<S, D, P, Features...>> {
   using State = detail::SystemState<S, D, P, Features...>;
+  using Facets = detail::SystemFacets<detail::SystemStateBase<S, D, P, Features...>>;
   using R = real_of_t<S>;
   using Layout = typename State::Layout;
   using Kernel = typename State::Kernel;
   using State::acceleration_;
   using State::damping_;
   using State::expiring_;
-  using State::handles_;
   using State::load;
   using State::store;
   using State::valid_index;
@@ -88,20 +113,10 @@ class ParticleSystem
   /// particles: what step_particle works on.
   using Arrays = typename Layout::Arrays;
   using typename Kernel::StepParameters;
-  /// The element type of column C: R, but for Column::damping with a damping policy of the
-  /// user's whose state is neither StoredDamping nor LogDamping (then that state).
-  template <Column C>
-  using element_t = typename Layout::template element_t<C>;
-  /// The user's columns (features::Column<Tag, T>) as a std::tuple, and how many.
-  using user_columns = typename Layout::user_columns;
-  static constexpr std::size_t user_column_count = Layout::user_column_count;
-  /// The element type of the user column tagged Tag.
-  template <class Tag>
-  using user_element_t =
-      typename Layout::template user_element_t<Layout::template user_index<Tag>>;
-  /// A particle's stable name (features::Handles): see handle() and find().
-  using Handle = typename std::conditional_t<Layout::has_handles, typename State::Table,
-                                             detail::HandleTable<std::uint32_t>>::Handle;
+  /// A particle's stable name (features::Handles; system/handles.hpp).
+  using typename Facets::Handle;
+  // The columns' traits (element_t, stores, user_columns, user_column_count, user_element_t,
+  // has_column) are system/columns.hpp's.
 
   static constexpr bool per_particle_damping = Layout::per_particle_damping;
   static constexpr bool per_particle_acceleration = Layout::per_particle_acceleration;
@@ -109,17 +124,11 @@ class ParticleSystem
   static constexpr bool has_lifetime = Layout::has_lifetime;
   static constexpr bool has_interpolation = Layout::has_interpolation;
   static constexpr bool has_handles = Layout::has_handles;
-  /// True when the user column tagged Tag exists.
-  template <class Tag>
-  static constexpr bool has_column = Layout::template user_index<Tag> < user_column_count;
   /// True when the damping policy has a damping value at all (not damping::None).
   static constexpr bool stores_damping = !std::is_empty_v<damping_state>;
   static_assert(!per_particle_damping || stores_damping,
                 "features::PerParticleDamping needs a damping policy with a damping value "
                 "(damping::None has none)");
-  /// True when this configuration stores column C.
-  template <Column C>
-  static constexpr bool stores = Layout::template stores<C>;
   /// Bytes each particle occupies (the block adds under 4.5 KiB per array of padding).
   static constexpr std::size_t storage_bytes_per_particle = Layout::bytes_per_particle;
   /// How many arrays the block holds.
@@ -198,12 +207,12 @@ class ParticleSystem
   }
   /// Adds a particle with a value for each user column, in the order of the features.
   template <class... Values>
-    requires(sizeof...(Values) > 0 && sizeof...(Values) == user_column_count)
+    requires(sizeof...(Values) > 0 && sizeof...(Values) == Layout::user_column_count)
   std::size_t spawn(const Vector3<position_value>& position, const Vector3<R>& velocity,
                     const Values&... values) {
     const std::size_t i = spawn(position, velocity);
     if (i != npos) {
-      State::store_user_columns(i, std::make_index_sequence<user_column_count>{}, values...);
+      State::store_user_columns(i, std::make_index_sequence<sizeof...(Values)>{}, values...);
     }
     return i;
   }
@@ -221,7 +230,7 @@ class ParticleSystem
     requires has_handles
   Handle spawn_handle(const Arguments&... arguments) {
     const std::size_t i = spawn(arguments...);
-    return i == npos ? Handle{} : handle(i);
+    return i == npos ? Handle{} : this->handle(i);
   }
   /// Spawns `count` particles, reserving once: particle k is spawn(generator(k)...), where
   /// generator(k) returns the arguments of a spawn as a tuple-like value (a std::pair of
@@ -265,22 +274,6 @@ class ParticleSystem
 
   Vector3<position_value> position(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
     return valid_index("position", i) ? State::load_position(i) : Vector3<position_value>{};
-  }
-  /// Particle i's position relative to `origin` (a camera), as float: from the whole
-  /// stored position, exact wherever the true offset is a float (precision.hpp).
-  Vector3<float> position_relative_to(std::size_t i, const Vector3<position_value>& origin) const
-      noexcept(!POINTMASS_HOST_CHECKS) {
-    if (!valid_index("position_relative_to", i)) return {};
-    return State::relative(arrays(), i, origin);
-  }
-  /// Every particle's position relative to `origin`, as float, into `buffer` (at least
-  /// size() elements; element i for particle i): what a renderer uploads. A buffer too small
-  /// is reported and nothing is written.
-  void positions_relative_to(const Vector3<position_value>& origin,
-                             std::span<Vector3<float>> buffer) const {
-    if (!detail::check_buffer("positions_relative_to", "buffer", buffer.size(), size())) return;
-    const Arrays a = arrays();
-    for (std::size_t i = 0; i < a.size; ++i) buffer[i] = State::relative(a, i, origin);
   }
   Vector3<R> velocity(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
     if (!valid_index("velocity", i)) return {};
@@ -335,226 +328,6 @@ class ParticleSystem
       State::store_damping(i, damping_state(damping));
     }
   }
-
-  R inverse_mass(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS)
-    requires has_forces
-  {
-    return valid_index("inverse_mass", i) ? arrays().inverse_mass[i] : R(0);
-  }
-  Vector3<R> force_accumulator(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS)
-    requires has_forces
-  {
-    if (!valid_index("force_accumulator", i)) return {};
-    return load(arrays().force_x, arrays().force_y, arrays().force_z, i);
-  }
-  /// mass > 0 (infinity makes the particle immovable), with 1/mass finite and normal.
-  void set_mass(std::size_t i, R mass)
-    requires has_forces
-  {
-    if (detail::check_index("set_mass", i, size()) && detail::check_mass("set_mass", mass)) {
-      arrays().inverse_mass[i] = R(1) / mass;
-    }
-  }
-  /// inverse mass 0 (immovable) or finite, normal and > 0.
-  void set_inverse_mass(std::size_t i, R inverse_mass)
-    requires has_forces
-  {
-    if (detail::check_index("set_inverse_mass", i, size()) &&
-        detail::check_inverse_mass("set_inverse_mass", inverse_mass)) {
-      arrays().inverse_mass[i] = inverse_mass;
-    }
-  }
-  /// Adds a force to particle i for the next step only. As Particle::add_force: a hot-path
-  /// call, so its preconditions (i < size(), a finite force) are checked when
-  /// POINTMASS_CHECKS is on.
-  void add_force(std::size_t i, const Vector3<R>& force) noexcept(!POINTMASS_HOST_CHECKS)
-    requires has_forces
-  {
-#if POINTMASS_HOST_CHECKS
-    if (!detail::check_index("add_force", i, size()) ||
-        !detail::check_finite("add_force", "force", force)) {
-      return;
-    }
-#endif
-    const Arrays& a = arrays();
-    a.force_x[i] += force.x;
-    a.force_y[i] += force.y;
-    a.force_z[i] += force.z;
-  }
-
-  R age(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS)
-    requires has_lifetime
-  {
-    return valid_index("age", i) ? arrays().age[i] : R(0);
-  }
-  R lifetime(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS)
-    requires has_lifetime
-  {
-    return valid_index("lifetime", i) ? arrays().lifetime[i] : R(0);
-  }
-  /// Seconds particle i lives (> 0; infinity for ever: an infinite lifetime never expires).
-  /// It is removed by the step after which its age reaches this. Ages add up in R: in float
-  /// a step of t stops adding to an age once the age's spacing exceeds 2 t (at 60 Hz, after
-  /// 2^19 s, about 6 days), so give lifetimes beyond 2^17 s to a double system.
-  void set_lifetime(std::size_t i, R seconds)
-    requires has_lifetime
-  {
-    if (detail::check_index("set_lifetime", i, size()) &&
-        detail::check_lifetime("set_lifetime", seconds)) {
-      arrays().lifetime[i] = seconds;
-    }
-  }
-
-  // --- user columns (features::Column<Tag, T>) -----------------------------------------------
-
-  /// The user column tagged Tag, over the live particles.
-  template <class Tag>
-    requires has_column<Tag>
-  std::span<user_element_t<Tag>> column() noexcept {
-    return {user_pointer<Tag>(), size()};
-  }
-  template <class Tag>
-    requires has_column<Tag>
-  std::span<const user_element_t<Tag>> column() const noexcept {
-    return {user_pointer<Tag>(), size()};
-  }
-  /// Particle i's value in the user column tagged Tag.
-  template <class Tag>
-    requires has_column<Tag>
-  user_element_t<Tag> column(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
-    return valid_index("column", i) ? user_pointer<Tag>()[i] : user_element_t<Tag>{};
-  }
-  template <class Tag>
-    requires has_column<Tag>
-  void set_column(std::size_t i, const user_element_t<Tag>& value) {
-    if (detail::check_index("set_column", i, size())) user_pointer<Tag>()[i] = value;
-  }
-
-  // --- stable handles (features::Handles) ----------------------------------------------------
-
-  /// The handle of particle i: it finds this particle for as long as it lives. O(1).
-  Handle handle(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS)
-    requires has_handles
-  {
-    return valid_index("handle", i) ? handles_.handle(arrays().handle_slot[i]) : Handle{};
-  }
-  /// The current index of the particle `handle` names, or nothing once it has died. O(1).
-  std::optional<std::size_t> find(const Handle& handle) const noexcept
-    requires has_handles
-  {
-    return handles_.find(handle);
-  }
-  /// True while the particle `handle` names is alive.
-  bool contains(const Handle& handle) const noexcept
-    requires has_handles
-  {
-    return handles_.find(handle).has_value();
-  }
-  /// Bytes of the slot table beside the block (8 a slot with std::uint32_t generations).
-  std::size_t handle_table_bytes() const noexcept
-    requires has_handles
-  {
-    return handles_.bytes();
-  }
-
-  // --- fixed steps: interpolation (features::Interpolation) ----------------------------------
-
-  /// Particle i's position column before the last step (its spawn or set_position position
-  /// if it has not stepped since; for Compensated positions, the float part).
-  Vector3<position_element> previous_position(std::size_t i) const
-      noexcept(!POINTMASS_HOST_CHECKS)
-    requires has_interpolation
-  {
-    if (!valid_index("previous_position", i)) return {};
-    return load(arrays().previous_position_x, arrays().previous_position_y,
-                arrays().previous_position_z, i);
-  }
-  /// Particle i's position at the fraction `alpha` in [0, 1] of the last step: alpha 0 gives
-  /// the previous position and 1 the current one, bit for bit; between them
-  /// previous + (current - previous) alpha, in the position columns' element type.
-  Vector3<position_element> interpolated_position(std::size_t i, R alpha) const
-    requires has_interpolation
-  {
-    if (!detail::check_index("interpolated_position", i, size()) ||
-        !detail::check_fraction("interpolated_position", "alpha", alpha)) {
-      return {};
-    }
-    Vector3<position_element> out{};
-    State::for_each_output_position(alpha, i, i + 1,
-                                    [&](std::size_t, auto x, auto y, auto z) { out = {x, y, z}; });
-    return out;
-  }
-
-  // --- renderer hand-off ---------------------------------------------------------------------
-
-  /// Copies the positions into `out` as x, y, z at out[i * stride], out[i * stride + 1],
-  /// out[i * stride + 2] (stride >= 3: 3 packed, more for interleaved vertices; pass
-  /// buffer.subspan(offset) to start elsewhere), converted to T. `out` needs
-  /// (size() - 1) * stride + 3 elements; a shorter one is reported and nothing is written.
-  template <class T>
-    requires std::is_arithmetic_v<T>
-  void copy_positions(std::span<T> out, std::size_t stride = 3) const {
-    State::copy_strided("copy_positions", R(1), out, stride);
-  }
-  /// Copies the positions into vectors with x, y, z members (glm::vec3, ...): out[i] for
-  /// particle i; `out` needs size() elements.
-  template <class V>
-    requires(!std::is_arithmetic_v<V> && requires(V& v) { v.x = v.y = v.z; })
-  void copy_positions(std::span<V> out) const {
-    State::copy_vectors("copy_positions", R(1), out);
-  }
-  /// As copy_positions, with the positions at the fraction alpha of the last step.
-  template <class T>
-    requires(has_interpolation && std::is_arithmetic_v<T>)
-  void copy_interpolated_positions(R alpha, std::span<T> out, std::size_t stride = 3) const {
-    if (detail::check_fraction("copy_interpolated_positions", "alpha", alpha)) {
-      State::copy_strided("copy_interpolated_positions", alpha, out, stride);
-    }
-  }
-  template <class V>
-    requires(has_interpolation && !std::is_arithmetic_v<V> &&
-             requires(V& v) { v.x = v.y = v.z; })
-  void copy_interpolated_positions(R alpha, std::span<V> out) const {
-    if (detail::check_fraction("copy_interpolated_positions", "alpha", alpha)) {
-      State::copy_vectors("copy_interpolated_positions", alpha, out);
-    }
-  }
-
-  // --- spans for renderers and other engines (valid until the block grows or moves) ---------
-
-  /// Column C of the live particles, for any column this configuration stores. The damping
-  /// columns of PerSecond and Exact (d and ln d as hi + lo, which must agree) are read-only:
-  /// set_damping(i, d) writes them.
-  template <Column C>
-    requires stores<C>
-  std::span<std::conditional_t<Layout::template read_only<C>, const element_t<C>, element_t<C>>>
-  column() noexcept {
-    return {arrays().*(Layout::template entry<C>::member), size()};
-  }
-  template <Column C>
-    requires stores<C>
-  std::span<const element_t<C>> column() const noexcept {
-    return {arrays().*(Layout::template entry<C>::member), size()};
-  }
-  // The arrays users read most, by name.
-  std::span<position_element> position_x() noexcept { return column<Column::position_x>(); }
-  std::span<position_element> position_y() noexcept { return column<Column::position_y>(); }
-  std::span<position_element> position_z() noexcept { return column<Column::position_z>(); }
-  std::span<R> velocity_x() noexcept { return column<Column::velocity_x>(); }
-  std::span<R> velocity_y() noexcept { return column<Column::velocity_y>(); }
-  std::span<R> velocity_z() noexcept { return column<Column::velocity_z>(); }
-  std::span<const position_element> position_x() const noexcept {
-    return column<Column::position_x>();
-  }
-  std::span<const position_element> position_y() const noexcept {
-    return column<Column::position_y>();
-  }
-  std::span<const position_element> position_z() const noexcept {
-    return column<Column::position_z>();
-  }
-  std::span<const R> velocity_x() const noexcept { return column<Column::velocity_x>(); }
-  std::span<const R> velocity_y() const noexcept { return column<Column::velocity_y>(); }
-  std::span<const R> velocity_z() const noexcept { return column<Column::velocity_z>(); }
 
   /// The raw arrays (see step_particle), with size() live particles. Valid until the block
   /// grows or moves (a growing spawn, reserve, move, swap).
@@ -622,11 +395,6 @@ class ParticleSystem
   /// lifetime (an infinite one never expires, even when the age itself overflows).
   using State::expired;
 
- private:
-  template <class Tag>
-  auto* user_pointer() const noexcept {
-    return Layout::template user_pointer<Layout::template user_index<Tag>>(arrays());
-  }
 };
 
 }  // namespace pointmass

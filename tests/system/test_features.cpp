@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <set>
 #include <span>
@@ -360,4 +361,60 @@ TEST_CASE_TEMPLATE("bad input is reported with the argument's name and value", R
 #endif
   CHECK(system.size() == 1);
   CHECK(system.damping() == R(1));
+}
+
+// The members of one feature or one use live in facets (system/*.hpp), public bases that add
+// no data: a system is as big as its state, and reaches the state through them alone.
+template <class R, class D, class P, class... Features>
+constexpr bool facets_cost_nothing() {
+  using System = ParticleSystem<R, D, P, Features...>;
+  using State = detail::SystemState<R, D, P, Features...>;
+  return sizeof(System) == sizeof(State) && alignof(System) == alignof(State) &&
+         !std::is_convertible_v<System*, State*>;
+}
+
+TEST_CASE_TEMPLATE("the facets add members and no bytes", R, float, double) {
+  struct Tag {};
+  static_assert(facets_cost_nothing<R, damping::None, position::Euler>());
+  static_assert(facets_cost_nothing<R, damping::PerSecond, position::Euler>());
+  static_assert(facets_cost_nothing<R, damping::Exact, position::Exact,
+                                    features::PerParticleDamping, features::ForceAccumulator>());
+  static_assert(facets_cost_nothing<R, damping::PerSecond, position::Euler, features::Lifetime,
+                                    features::Handles, features::Interpolation,
+                                    features::ForceAccumulator, features::Column<Tag, int>>());
+  static_assert(facets_cost_nothing<R, damping::PerFrame, position::Euler,
+                                    features::BasicHandles<std::uint16_t>,
+                                    features::PerParticleAcceleration>());
+
+  // Each facet's members exist with its feature only.
+  using Sparks = ParticleSystem<R>;
+  using Full = ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
+                              features::Handles, features::Interpolation,
+                              features::ForceAccumulator, features::Column<Tag, int>>;
+  static_assert(!requires(const Sparks& s) { s.handle(std::size_t{0}); });
+  static_assert(requires(const Full& s) { s.handle(std::size_t{0}); });
+  static_assert(!requires(const Sparks& s) { s.previous_position(std::size_t{0}); });
+  static_assert(requires(const Full& s) { s.previous_position(std::size_t{0}); });
+  static_assert(!requires(const Sparks& s) { s.inverse_mass(std::size_t{0}); });
+  static_assert(requires(const Full& s) { s.inverse_mass(std::size_t{0}); });
+  static_assert(!requires(const Sparks& s) { s.age(std::size_t{0}); });
+  static_assert(requires(const Full& s) { s.age(std::size_t{0}); });
+  static_assert(!Sparks::template has_column<Tag> && Full::template has_column<Tag>);
+  static_assert(requires(const Full& s) { s.template column<Tag>(std::size_t{0}); });
+  // Both column families answer on the same system: neither facet hides the other.
+  static_assert(requires(Full& s) {
+    s.template column<Tag>();
+    s.template column<Column::age>();
+  });
+
+  Full system;
+  const std::size_t i = system.spawn({R(1), R(2), R(3)}, {});
+  system.template set_column<Tag>(i, 7);
+  system.set_lifetime(i, R(2));
+  system.set_mass(i, R(4));
+  CHECK(system.template column<Tag>(i) == 7);
+  CHECK(system.template column<Column::lifetime>()[i] == R(2));
+  CHECK(system.inverse_mass(i) == R(0.25));
+  CHECK(system.find(system.handle(i)) == std::optional<std::size_t>(i));
+  CHECK(system.position_x()[i] == R(1));
 }

@@ -488,4 +488,10 @@ class SystemState {
   }
 };
 
+// The state at the bottom of ParticleSystem's facets (system/*.hpp): a protected base, so
+// that its members reach the facets and the class above them, and a system does not convert
+// to it outside them.
+template <class S, DampingPolicy D, class P, class... Features>
+class SystemStateBase : protected SystemState<S, D, P, Features...> {};
+
 }  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail

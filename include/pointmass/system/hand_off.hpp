@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: BSL-1.0
+// pointmass/system/hand_off.hpp — a ParticleSystem's positions handed to a renderer.
+//
+//   system.copy_positions(std::span(vertices), 8);               // interleaved vertices
+//   system.positions_relative_to(camera, std::span(offsets));    // far from the origin
+//
+// SystemHandOff<Base> is a facet of ParticleSystem (particle_system.hpp lists them): a class
+// template over the state below it that adds public members and no data, so a system is no
+// bigger for it. With features::Interpolation, system/interpolation.hpp copies positions
+// between two steps the same ways.
+//
+// Owns: both copy_positions (strided numbers, vectors with x, y, z members),
+// positions_relative_to and position_relative_to (the camera-relative float positions of
+// precision.hpp).
+// Must not include: particle_system.hpp, detail/system_state.hpp or another facet (it uses
+// only Base's arrays(), size(), valid_index() and its copy-out of positions).
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <type_traits>
+
+#include "../config.hpp"
+#include "../detail/validate.hpp"
+#include "../vector3.hpp"
+
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
+
+template <class Base>
+class SystemHandOff : public Base {
+ protected:
+  using R = typename Base::R;
+  using position_value = typename Base::position_value;
+
+ public:
+  /// Copies the positions into `out` as x, y, z at out[i * stride], out[i * stride + 1],
+  /// out[i * stride + 2] (stride >= 3: 3 packed, more for interleaved vertices; pass
+  /// buffer.subspan(offset) to start elsewhere), converted to T. `out` needs
+  /// (size() - 1) * stride + 3 elements; a shorter one is reported and nothing is written.
+  template <class T>
+    requires std::is_arithmetic_v<T>
+  void copy_positions(std::span<T> out, std::size_t stride = 3) const {
+    this->copy_strided("copy_positions", R(1), out, stride);
+  }
+  /// Copies the positions into vectors with x, y, z members (glm::vec3, ...): out[i] for
+  /// particle i; `out` needs size() elements.
+  template <class V>
+    requires(!std::is_arithmetic_v<V> && requires(V& v) { v.x = v.y = v.z; })
+  void copy_positions(std::span<V> out) const {
+    this->copy_vectors("copy_positions", R(1), out);
+  }
+  /// Particle i's position relative to `origin` (a camera), as float: from the whole
+  /// stored position, exact wherever the true offset is a float (precision.hpp).
+  Vector3<float> position_relative_to(std::size_t i, const Vector3<position_value>& origin) const
+      noexcept(!POINTMASS_HOST_CHECKS) {
+    if (!this->valid_index("position_relative_to", i)) return {};
+    return Base::relative(this->arrays(), i, origin);
+  }
+  /// Every particle's position relative to `origin`, as float, into `buffer` (at least
+  /// size() elements; element i for particle i): what a renderer uploads. A buffer too small
+  /// is reported and nothing is written.
+  void positions_relative_to(const Vector3<position_value>& origin,
+                             std::span<Vector3<float>> buffer) const {
+    if (!detail::check_buffer("positions_relative_to", "buffer", buffer.size(), this->size())) {
+      return;
+    }
+    const typename Base::Arrays a = this->arrays();
+    for (std::size_t i = 0; i < a.size; ++i) buffer[i] = Base::relative(a, i, origin);
+  }
+};
+
+}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE
