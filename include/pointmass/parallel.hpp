@@ -91,6 +91,23 @@ bool step_chunks(ExecutionPolicy&& policy, System& system, R duration) {
                 });
   return true;
 }
+
+/// After step_chunks stepped every particle with step_parameters(duration): what
+/// ParticleSystem::step does after its walk. Unlike finish_step() (which cannot know what a
+/// loop of the caller's did, and so forgets), it keeps the damping_retention column's d^t as
+/// this duration's, so that the next step of the same length computes no exponential.
+struct SystemAccess {
+  template <class System, class R, class OnExpire>
+  static void finish_step(System& system, R duration, OnExpire& on_expire) {
+    system.record_retention(duration);  // the state's, reached through the system
+    system.expire(on_expire);
+  }
+  template <class System, class R>
+  static void finish_step(System& system, R duration) {
+    typename System::State::NoCallback none;
+    finish_step(system, duration, none);
+  }
+};
 }  // namespace detail
 
 /// Steps `system` by `duration` with the execution policy `policy` (for example
@@ -101,7 +118,7 @@ template <class ExecutionPolicy, Real R, class D, class P, class... Features>
   requires std::is_execution_policy_v<std::remove_cvref_t<ExecutionPolicy>>
 void step(ExecutionPolicy&& policy, ParticleSystem<R, D, P, Features...>& system, R duration) {
   if (detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration)) {
-    system.finish_step();
+    detail::SystemAccess::finish_step(system, duration);
   }
 }
 
@@ -114,7 +131,7 @@ template <class ExecutionPolicy, Real R, class D, class P, class... Features, cl
 void step(ExecutionPolicy&& policy, ParticleSystem<R, D, P, Features...>& system, R duration,
           OnExpire&& on_expire) {
   if (detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration)) {
-    system.finish_step(on_expire);
+    detail::SystemAccess::finish_step(system, duration, on_expire);
   }
 }
 

@@ -395,6 +395,8 @@ class ParticleSystem
   /// lifetime (an infinite one never expires, even when the age itself overflows).
   using State::expired;
 
+ private:
+  friend struct detail::SystemAccess;  // parallel.hpp: a step that keeps d^t as step does
 };
 
 }  // namespace pointmass

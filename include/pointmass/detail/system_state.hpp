@@ -38,6 +38,9 @@
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
+// What parallel.hpp's step reaches beyond a system's public API (a friend of ParticleSystem).
+struct SystemAccess;
+
 template <class S, DampingPolicy D, class P, class... Features>
 class SystemState {
  protected:
@@ -361,6 +364,11 @@ class SystemState {
   void forget_retention() noexcept {
     if constexpr (Layout::per_particle_retention) retention_duration_ = R(-1);
   }
+  // Every particle has just stepped through step_particle with step_parameters(duration):
+  // the damping_retention column holds d^t for this duration.
+  void record_retention(R duration) noexcept {
+    if constexpr (Layout::per_particle_retention) retention_duration_ = duration;
+  }
   // Steps every particle, walking in the direction due; false when there was nothing to do.
   bool walk(R duration) {
     if (!begin_step(duration)) return false;
@@ -368,7 +376,7 @@ class SystemState {
     (backward_ ? Kernel::step_range_backward : Kernel::step_range)(arrays(), 0, size(),
                                                                    parameters);
     backward_ = !backward_ && Kernel::alternates(size());
-    if constexpr (Layout::per_particle_retention) retention_duration_ = duration;
+    record_retention(duration);
     return true;
   }
 
