@@ -104,7 +104,7 @@ struct SystemAccess {
   }
   template <class System, class R>
   static void finish_step(System& system, R duration) {
-    typename System::State::NoCallback none;
+    typename System::NoCallback none;  // the state's, named through the system
     finish_step(system, duration, none);
   }
 };
