@@ -6,9 +6,11 @@
 // not choose it.
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <set>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include <pointmass/fixed_step.hpp>
@@ -227,6 +229,33 @@ TEST_CASE("handles: live handles find their particle, dead ones nothing, after a
   // Slots were reused (the table is far smaller than the number of particles ever spawned).
   CHECK(system.handle_table_bytes() < std::size_t{next_id} * 8 / 4);
   CHECK_FALSE(system.find(Named::Handle{}).has_value());  // a default handle names nothing
+}
+
+TEST_CASE("handles: a moved-from system starts a new table (no free slot it does not have)") {
+  // The table's free list once survived a move while its slots did not: the moved-from
+  // system's next spawn then took a freed slot number past the end of its empty table.
+  using Named = ParticleSystem<double, damping::None, position::Euler, features::Handles>;
+  Named source;
+  for (int i = 0; i < 8; ++i) source.spawn({double(i), 0, 0}, {});
+  source.kill(2);
+  source.kill(5);  // slots 2 and 5 on the free list
+  const Named::Handle kept = source.handle(0);
+  Named target = std::move(source);
+  CHECK(target.find(kept) == std::optional<std::size_t>{0});  // the table moved along
+  Named assigned;
+  assigned = std::move(target);  // move-assigned: the same through the swap
+  CHECK(assigned.find(kept) == std::optional<std::size_t>{0});
+  for (Named* moved_from : {&source, &target}) {
+    REQUIRE(moved_from->size() == 0);
+    CHECK(moved_from->handle_table_bytes() == 0);
+    const Named::Handle first = moved_from->spawn_handle(Vector3<double>{1, 2, 3}, Vector3<double>{});
+    const Named::Handle second = moved_from->spawn_handle(Vector3<double>{4, 5, 6}, Vector3<double>{});
+    CHECK(first.slot == 0);  // new slots from the start, not the old free list's 5 and 2
+    CHECK(second.slot == 1);
+    CHECK(moved_from->find(first) == std::optional<std::size_t>{0});
+    CHECK(moved_from->find(second) == std::optional<std::size_t>{1});
+    CHECK(moved_from->position(1).x == 4.0);
+  }
 }
 
 TEST_CASE("handles: a slot's generation wraps by retiring the slot, old handles stay dead") {

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "../config.hpp"
@@ -39,6 +40,23 @@ class HandleTable {
   static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
   /// Slot numbers and particle indices are 0 .. none - 1.
   static constexpr std::size_t max_slots = none;
+
+  HandleTable() = default;
+  HandleTable(const HandleTable&) = default;
+  HandleTable& operator=(const HandleTable&) = default;
+  /// A moved-from table is empty, free list included (a free list naming slots it no longer
+  /// has would send its next acquire past the end of its slots).
+  HandleTable(HandleTable&& other) noexcept
+      : slots_(std::move(other.slots_)), free_(std::exchange(other.free_, none)) {
+    other.slots_.clear();
+  }
+  HandleTable& operator=(HandleTable&& other) noexcept {
+    slots_ = std::move(other.slots_);
+    other.slots_.clear();
+    free_ = std::exchange(other.free_, none);
+    return *this;
+  }
+  ~HandleTable() = default;
 
   void reserve(std::size_t count) { slots_.reserve(count < max_slots ? count : max_slots); }
   std::size_t slot_count() const noexcept { return slots_.size(); }
