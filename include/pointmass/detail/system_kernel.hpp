@@ -257,8 +257,7 @@ class SystemKernel {
       POINTMASS_DETAIL_INDEPENDENT_ITERATIONS  // the step loop (tests/system probes this line)
       for (std::size_t k = 0; k < blocked; ++k) step_kept(arrays, first + k, parameters);
       // The remainder (under vector_block particles) marked too: with -march=native it runs
-      // as one or two shorter vectors instead of up to 15 scalar steps (about a tenth of the
-      // step of 1,000 sparks).
+      // as one or two shorter vectors instead of up to 15 scalar steps.
       POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
       for (std::size_t k = blocked; k < count; ++k) step_kept(arrays, first + k, parameters);
     } else {  // a power function per particle: no vector loop to ask for
