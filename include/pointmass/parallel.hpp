@@ -113,10 +113,13 @@ struct SystemAccess {
 /// Steps `system` by `duration` with the execution policy `policy` (for example
 /// std::execution::par_unseq): the particles are split into chunks of 16,384, each stepped
 /// by the vectorised loop; expiry (Lifetime) then runs on the calling thread. The results
-/// are those of system.step(duration), bit for bit.
-template <class ExecutionPolicy, Real R, class D, class P, class... Features>
+/// are those of system.step(duration), bit for bit. S is the system's first argument: a Real,
+/// or a Precision (precision.hpp) whose positions are stored wider; `duration` is in the
+/// system's arithmetic type (`real`), as system.step's is.
+template <class ExecutionPolicy, class S, class D, class P, class... Features>
   requires std::is_execution_policy_v<std::remove_cvref_t<ExecutionPolicy>>
-void step(ExecutionPolicy&& policy, ParticleSystem<R, D, P, Features...>& system, R duration) {
+void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system,
+          typename ParticleSystem<S, D, P, Features...>::real duration) {
   if (detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration)) {
     detail::SystemAccess::finish_step(system, duration);
   }
