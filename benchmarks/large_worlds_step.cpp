@@ -5,8 +5,10 @@
 // compensated float pair (9 arrays, 36 bytes), at 1,000, 100,000 and 10,000,000 particles;
 // and the same for the artillery configuration (damping::Exact, position::Exact). Beside them,
 // the bound: the sparks' arithmetic written by hand over plain arrays with each of the three
-// storages (float positions; double positions; float positions with float error terms), so
-// that what wider positions cost the hardware itself is measured in the same run.
+// storages (float positions; double positions; float positions with float error terms), and
+// the least any loop over each storage does (BM_Traffic: every byte loaded, one addition,
+// stored back), so that what wider positions cost the hardware itself is measured in the
+// same run.
 // scripts/large-worlds.sh runs it and writes the ratios into docs/large-worlds.md.
 // Counters: items_per_second = particle-steps per second.
 #include <pointmass/particle_system.hpp>
@@ -94,44 +96,95 @@ void hand_sparks(P* __restrict px, P* __restrict py, P* __restrict pz, float* __
   }
 }
 
+/// The arrays a hand-written loop steps: positions of the storage's type, float velocities and
+/// (compensated only) float error terms, in one aligned block, each column offset by k x 448
+/// bytes within its page (as a system's, so that no two columns' loads and stores share their
+/// addresses' low bits), filled as make_system fills a system.
 template <Storage S>
-void BM_HandSparks(benchmark::State& state) {
+struct HandArrays {
   using P = std::conditional_t<S == Storage::double_positions, double, float>;
-  const auto n = static_cast<std::size_t>(state.range(0));
-  // The columns in one aligned block, each offset by k x 448 bytes within its page (as a
-  // system's, so that no two columns' loads and stores share their addresses' low bits).
-  const std::size_t float_span = (n * sizeof(float) + 4095) / 4096 * 4096 + 448;
-  const std::size_t position_span = (n * sizeof(P) + 4095) / 4096 * 4096 + 448;
-  const std::size_t errors = S == Storage::compensated_positions ? 3 : 0;
-  const std::size_t bytes = 3 * position_span + (3 + errors) * float_span;
-  auto* block = static_cast<std::byte*>(::operator new(bytes, std::align_val_t{64}));
+  static constexpr std::size_t errors = S == Storage::compensated_positions ? 3 : 0;
+
+  explicit HandArrays(std::size_t count) : n(count) {
+    const std::size_t float_span = (n * sizeof(float) + 4095) / 4096 * 4096 + 448;
+    const std::size_t position_span = (n * sizeof(P) + 4095) / 4096 * 4096 + 448;
+    block = static_cast<std::byte*>(
+        ::operator new(3 * position_span + (3 + errors) * float_span, std::align_val_t{64}));
+    std::mt19937 engine(1);
+    std::uniform_real_distribution<float> value(-10.0f, 10.0f);
+    for (std::size_t k = 0; k < 3; ++k) {
+      p[k] = reinterpret_cast<P*>(block + k * position_span);
+      v[k] = reinterpret_cast<float*>(block + 3 * position_span + k * float_span);
+      if (errors != 0) {
+        e[k] = reinterpret_cast<float*>(block + 3 * position_span + (3 + k) * float_span);
+      }
+      for (std::size_t i = 0; i < n; ++i) {
+        p[k][i] = static_cast<P>((k == 0 ? 1e6f : 0.0f) + 10.0f * value(engine));
+        v[k][i] = value(engine);
+        if (errors != 0) e[k][i] = 0.0f;
+      }
+    }
+  }
+  HandArrays(const HandArrays&) = delete;
+  HandArrays& operator=(const HandArrays&) = delete;
+  ~HandArrays() { ::operator delete(block, std::align_val_t{64}); }
+
+  std::size_t n;
+  std::byte* block;
   P* p[3];
   float* v[3];
   float* e[3] = {nullptr, nullptr, nullptr};
-  std::mt19937 engine(1);
-  std::uniform_real_distribution<float> value(-10.0f, 10.0f);
-  for (std::size_t k = 0; k < 3; ++k) {
-    p[k] = reinterpret_cast<P*>(block + k * position_span);
-    v[k] = reinterpret_cast<float*>(block + 3 * position_span + k * float_span);
-    if (errors != 0) {
-      e[k] = reinterpret_cast<float*>(block + 3 * position_span + (3 + k) * float_span);
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      p[k][i] = static_cast<P>((k == 0 ? 1e6f : 0.0f) + 10.0f * value(engine));
-      v[k][i] = value(engine);
-      if (errors != 0) e[k][i] = 0.0f;
-    }
-  }
+};
+
+template <Storage S>
+void BM_HandSparks(benchmark::State& state) {
+  HandArrays<S> a(static_cast<std::size_t>(state.range(0)));
   const float t = duration<float>();
   const float kept = real_pow(0.9f, t);
   const Vector3<float> g = gravity<float>();
   for (auto _ : state) {
-    hand_sparks<S>(p[0], p[1], p[2], e[0], e[1], e[2], v[0], v[1], v[2], n, g.x, g.y, g.z, t,
-                   kept);
+    hand_sparks<S>(a.p[0], a.p[1], a.p[2], a.e[0], a.e[1], a.e[2], a.v[0], a.v[1], a.v[2], a.n,
+                   g.x, g.y, g.z, t, kept);
     benchmark::ClobberMemory();
   }
-  ::operator delete(block, std::align_val_t{64});
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(a.n));
+}
+
+// The least a step can do with the storage: load every byte the sparks' step loads, add a
+// constant, and store it back (one addition per element, no conversion, no TwoSum). Its time
+// against all-float's is what the bytes alone cost on this machine: a cost ratio below it is
+// out of reach of any loop over that storage.
+template <Storage S, class P>
+void touch_columns(P* __restrict px, P* __restrict py, P* __restrict pz, float* __restrict ex,
+                   float* __restrict ey, float* __restrict ez, float* __restrict vx,
+                   float* __restrict vy, float* __restrict vz, std::size_t n, float c) {
+  for (std::size_t i = 0; i < n; ++i) {
+    vx[i] += c;
+    vy[i] += c;
+    vz[i] += c;
+    px[i] += static_cast<P>(c);
+    py[i] += static_cast<P>(c);
+    pz[i] += static_cast<P>(c);
+    if constexpr (S == Storage::compensated_positions) {
+      ex[i] += c;
+      ey[i] += c;
+      ez[i] += c;
+    }
+  }
+}
+
+template <Storage S>
+void BM_Traffic(benchmark::State& state) {
+  HandArrays<S> a(static_cast<std::size_t>(state.range(0)));
+  // Alternating signs keep the values where they started.
+  float c = duration<float>();
+  for (auto _ : state) {
+    touch_columns<S>(a.p[0], a.p[1], a.p[2], a.e[0], a.e[1], a.e[2], a.v[0], a.v[1], a.v[2], a.n,
+                     c);
+    c = -c;
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(a.n));
 }
 
 using FloatSparks = ParticleSystem<float>;
@@ -154,6 +207,12 @@ POINTMASS_LARGE_WORLDS_BENCHMARK(CompensatedShots);
 BENCHMARK_TEMPLATE(BM_HandSparks, Storage::float_positions)->Arg(1000)->Arg(100000)->Arg(10000000);
 BENCHMARK_TEMPLATE(BM_HandSparks, Storage::double_positions)->Arg(1000)->Arg(100000)->Arg(10000000);
 BENCHMARK_TEMPLATE(BM_HandSparks, Storage::compensated_positions)
+    ->Arg(1000)
+    ->Arg(100000)
+    ->Arg(10000000);
+BENCHMARK_TEMPLATE(BM_Traffic, Storage::float_positions)->Arg(1000)->Arg(100000)->Arg(10000000);
+BENCHMARK_TEMPLATE(BM_Traffic, Storage::double_positions)->Arg(1000)->Arg(100000)->Arg(10000000);
+BENCHMARK_TEMPLATE(BM_Traffic, Storage::compensated_positions)
     ->Arg(1000)
     ->Arg(100000)
     ->Arg(10000000);

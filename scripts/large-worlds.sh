@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Regenerates docs/large-worlds.md's measured tables: builds examples/large_worlds.cpp (the
 # drift of each position precision after 10^6 steps) and benchmarks/large_worlds_step.cpp (the
 # batch step's cost, all variants side by side in one run) in Release with -march=native,
@@ -29,7 +30,9 @@ print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; med
       "`ParticleSystem::step`, M particle-steps/s, and the cost against all-float in the same "
       "run (time per step / all-float's). The rows \"by hand\" are the sparks' arithmetic "
       "written as a plain loop over arrays of each storage, in the same run: what the "
-      "storage itself costs on this machine, the bound for the rows above them.\n")
+      "storage itself costs on this machine, the bound for the rows above them. The rows "
+      "\"bytes only\" load every byte of each storage, add a constant and store it back: "
+      "what the bytes alone cost, with no arithmetic to speak of.\n")
 sizes = ("1000", "100000", "10000000")
 targets = {"Double": ("<= 1.15", "<= 1.50", "<= 1.50"),
            "Compensated": ("<= 1.30", "<= 1.50", "<= 1.50")}
@@ -55,6 +58,15 @@ for kind, title in (("Sparks", "sparks: per-second damping, p + v t, gravity"),
             cells = [f"{rate[f'{name}/{n}']:,.0f}" for n in sizes]
             costs = [f"{rate[f'{base}/{n}'] / rate[f'{name}/{n}']:.2f}" for n in sizes]
             print(f"| {label} | {size} | " + " | ".join(cells) + " | " + " | ".join(costs) + " | the bound |")
+        # What the bytes alone cost: every byte loaded, one addition, stored back.
+        for variant, label, size in (("float", "bytes only: float positions", 24),
+                                     ("double", "bytes only: double positions", 36),
+                                     ("compensated", "bytes only: float pair", 36)):
+            name = f"BM_Traffic<Storage::{variant}_positions>"
+            base = "BM_Traffic<Storage::float_positions>"
+            cells = [f"{rate[f'{name}/{n}']:,.0f}" for n in sizes]
+            costs = [f"{rate[f'{base}/{n}'] / rate[f'{name}/{n}']:.2f}" for n in sizes]
+            print(f"| {label} | {size} | " + " | ".join(cells) + " | " + " | ".join(costs) + " | the bytes alone |")
     print()
 PY
 publish_table "$doc" cost "$cost"
