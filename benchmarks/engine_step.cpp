@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The reference engine's own job, side by side: every particle with its own damping (0.99 per
 // second), mass and acceleration (gravity), stepped at 1/60 s, against
 //   * the engine's particle (tests/support/reference_engine.*: its 72-byte float / 144-byte

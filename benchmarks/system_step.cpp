@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // ParticleSystem::step against, in the same run: a hand-written loop of the same maths over
 // plain staggered arrays (the speed of light for this step; once forwards every step, once
 // with the system's alternating traversal), a read-modify-write bandwidth

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The cost of Boost.Units: the same scene through the plain particle and the SI particle, in
 // one run, and the ratio of their median times (1.00 = free).
 //

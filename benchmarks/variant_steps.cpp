@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // variant_steps — what a step costs for every compile-time variant, in ns per particle-step, with
 // hand-written loops of the same maths as baselines in the same run. scripts/sweep.sh runs
 // it (interleaved repetitions, medians), pairs each variant's time with its error from the

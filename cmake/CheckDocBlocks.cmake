@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 cmake_minimum_required(VERSION 3.21)
 # cmake -DDOCUMENT=doc.md "-DQUOTED_FROM=a.cpp;b.cpp" -DCOMPILER=c++ "-DINCLUDE_DIRS=x|y"
 #       -DWORK=dir -P CheckDocBlocks.cmake

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 cmake_minimum_required(VERSION 3.21)
 # cmake -DPROGRAM=generator -DEXPECTED=doc.md -DOUTPUT=build/doc.md -P CheckGenerated.cmake
 # Runs PROGRAM, which writes a document to standard output, and fails unless the output is

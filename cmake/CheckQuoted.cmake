@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 cmake_minimum_required(VERSION 3.21)
 # cmake -DDOCUMENT=doc.md "-DSOURCES=a.cpp;b.cpp" -P CheckQuoted.cmake
 # Fails unless every ```cpp block of the document appears verbatim in one of the sources:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 cmake_minimum_required(VERSION 3.21)
 # cmake -DROOT=tests -P CheckTestNames.cmake
 # Fails if the name of a doctest test case under ROOT holds a ';'. CTest keeps test names in

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Settings for the project's own targets (tests, examples, benchmarks); never for consumers.
 
 # Strict warnings, as errors, for everything the project builds itself.

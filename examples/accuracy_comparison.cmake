@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # The accuracy comparison needs the reference solutions (Boost.Odeint, tests/support/).
 target_link_libraries(accuracy_comparison PRIVATE pointmass_support)
 if(POINTMASS_BUILD_TESTS)

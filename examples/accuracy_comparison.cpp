@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // accuracy_comparison — every compile-time variant on the same scenes: how far from the true
 // motion it goes, and what a step costs. The README's main command (scripts/demo.sh).
 //

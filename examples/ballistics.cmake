@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 if(POINTMASS_BUILD_TESTS)
   # Where each round ends at 1/60 s, from the closed form p0 + v0 t phi1(kt) + a t^2 phi2(kt)
   # worked apart from the program: pistol lands at step 105 (t = 1.75 s, z = 60.715 m),

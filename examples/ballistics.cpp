@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // ballistics — the reference engine's ballistic demo as a terminal program.
 //
 // Four shots leave (0, 1.5, 0): pistol, artillery, fireball and laser (scenes.hpp has their

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 if(POINTMASS_BUILD_TESTS)
   # The program checks its own accounting (spawned = burnt out + live; every fuse in its
   # type's range); the test also needs bursts to have happened and sparks to be alive.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // fireworks — the reference engine's fireworks demo on the batch ParticleSystem.
 //
 // Nine firework types (rules): each has a fuse range, a box its launch velocity is drawn

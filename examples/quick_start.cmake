@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 if(POINTMASS_BUILD_TESTS)
   # The shell climbs from 1.5 m at 30 m/s under 20 m/s^2 for 1 s: about 1.5 + 30 - 10 = 21.5 m
   # up (less with drag and the short position update: 20 to 22 m), and about 40 m along z.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # The spring chain checks its own rest state against the equilibrium worked by hand and
 # prints "equilibrium: PASS" only when every particle is within 1 mm of it.
 if(POINTMASS_BUILD_TESTS)

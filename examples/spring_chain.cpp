@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A chain of particles on springs, hanging from a fixed anchor under gravity.
 //
 // Five 1 kg particles, joined by springs of stiffness 200 N/m and rest length 0.5 m, the top

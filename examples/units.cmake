@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # examples/units.cpp needs Boost.Units (pointmass::units). Smoke test: every shot is reported.
 target_link_libraries(units PRIVATE pointmass::units)
 if(POINTMASS_BUILD_TESTS)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 if(POINTMASS_BUILD_TESTS)
   # Sizes worked out by hand: four 3-vectors and the inverse mass are 13 numbers; a damping
   # value adds one, the exact policy's ln d another. A system stores 6 numbers per particle

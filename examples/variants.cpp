@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // variants — how to configure the library at compile time, and what each choice costs.
 //
 // Every Particle variant (precision x damping x position) with its size and what it stores,

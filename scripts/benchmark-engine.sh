@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Regenerates the "reference engine's job" table of docs/performance.md: builds
 # benchmarks/engine_step.cpp with -O3 -march=native (Release), runs it with interleaved
 # repetitions, prints the medians (M particle-steps/s) and their ratios against the reference

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Regenerates the Kokkos table of docs/performance.md: builds benchmarks/kokkos/kokkos_step.cpp
 # with -O3 -march=native (Release), runs it with interleaved repetitions, prints the medians
 # at 10,000,000 particles (M particle-steps/s) and their ratios as Markdown, and writes them

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Shared by the project's commands: installing what they need, configuring and building.
 # Sourced, not run.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # The main job: integrates the same scenes with every compile-time variant and prints a
 # table of error and time per step. Installs what is missing, builds (release), runs.
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Regenerates the accuracy table of the library's exponential in docs/numerics.md: builds
 # tests/reference/exponential_accuracy.cpp (g++, against __float128), runs it and writes its
 # table between the exponential markers.

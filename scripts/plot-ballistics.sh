@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Draws the four ballistic shots (side view: height against range) into
 # docs/images/ballistics.svg, from the ballistics example's CSV output, with gnuplot.
 set -euo pipefail

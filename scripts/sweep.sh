@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Work-precision diagrams (time to simulate a scene's span against error), for every
 # compile-time variant (float and double with every policy pair; float arithmetic with
 # double or compensated positions with PerSecond + Euler and Exact + Exact): regenerates the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # The whole test suite, as CI runs it: installs what is missing, then builds and runs every
 # test with g++ (debug, contract checks on), with clang (release), and under AddressSanitizer
 # and UndefinedBehaviorSanitizer (the behaviour tests; the tests of the build itself, and the

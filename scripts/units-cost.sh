@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # What the SI particle costs against the plain one, in instructions executed (valgrind's
 # count: exact and repeatable, unlike times on a shared machine), with g++ and clang at -O2.
 # Prints a table and writes it into docs/units.md between the units-cost markers.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Contracts: every bad argument gives the documented error, naming the argument and its
 // value, and leaves the particle unchanged; a user's handler is called instead when installed.
 // Built with POINTMASS_ENABLE_CHECKS, so the hot-path checks are on in every build type.

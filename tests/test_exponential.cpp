@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // detail/exponential.hpp: d^t, d^t - 1, e^x and e^x - 1 against long double's expl, expm1l
 // and logl (an oracle that shares no code with them; 11 more bits than double), the exact
 // values at the ends, and use in constant expressions.

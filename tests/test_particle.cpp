@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Particle: its state, defaults, storage, infinite mass, zero duration and gravity helpers.
 #include <doctest/doctest.h>
 

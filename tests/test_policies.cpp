@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Every policy's equation, one step, against values worked out by hand and against an
 // independent long double oracle, for every damping x position combination, float and
 // double. Tolerances are in units of the type's epsilon.

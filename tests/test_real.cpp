@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Real: the concept, and maths functions that stay in the precision they are given.
 #include <doctest/doctest.h>
 

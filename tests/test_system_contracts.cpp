@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // ParticleSystem's contracts and size arithmetic: impossible capacities are refused without
 // changing anything, indices and ranges are checked (this executable is built with
 // POINTMASS_ENABLE_CHECKS), a copy is steppable through arrays(), infinite lifetimes never

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Vector3: arithmetic, products, magnitude and normalisation, in float and double.
 #include <doctest/doctest.h>
 

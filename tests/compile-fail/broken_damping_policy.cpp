@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A damping policy with everything but its velocity update (damping::None without
 // velocity) does not satisfy DampingPolicy, and the requirement named is the velocity.
 // expected-error: D::velocity(vf, vf, tf, D::factors(

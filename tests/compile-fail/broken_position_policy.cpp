@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A position policy that returns a number instead of a position does not satisfy
 // PositionPolicyFor: one sentence says what a position policy needs.
 // expected-error: this position policy does not fit this damping policy: it needs a static position(p0, v0, v1, a, t, factors)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Compiles one snippet (cmake -P): -DCOMPILER, -DSOURCE, -DINCLUDE_DIRS (separated by |),
 # -DEXPECT=pass|fail. With EXPECT=fail the compilation must fail and its output must contain
 # the text of one of the snippet's "// expected-error: TEXT" lines (one line per compiler's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Double quantities given to a float particle.
 // expected-error: of another Real than the particle's
 #include <pointmass/units.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A duration in metres.
 // expected-error: integrate: wrong dimension
 #include <pointmass/units.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // An acceleration added as a force.
 // expected-error: add_force: wrong dimension
 #include <pointmass/units.hpp>

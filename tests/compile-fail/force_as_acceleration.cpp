@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A force given as an acceleration (gravity must be m/s^2, not N).
 // expected-error: set_acceleration: wrong dimension
 #include <pointmass/units.hpp>

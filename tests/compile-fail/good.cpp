@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Compiles: every argument has the type it should. Proves the harness can tell good from bad.
 #include <pointmass/particle.hpp>
 #include <pointmass/units.hpp>

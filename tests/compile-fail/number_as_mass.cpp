@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A plain number where a mass in kilograms belongs.
 // expected-error: set_mass: wrong dimension
 #include <pointmass/units.hpp>

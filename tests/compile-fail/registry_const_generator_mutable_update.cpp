@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A const generator is accepted when its update_force can run on a const object; one whose
 // update_force member is not const is refused with one sentence saying what to change.
 // expected-error: its update_force member is not: pass a non-const generator

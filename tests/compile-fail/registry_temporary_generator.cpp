@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // ForceRegistry::add keeps a pointer: a temporary generator would dangle at once. The owning
 // form (add_owned, emplace) is the way to hand the registry a generator to keep.
 // expected-error: use add_owned

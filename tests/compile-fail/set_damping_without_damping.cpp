@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // damping::None stores no damping value: set_damping says so, and names the policies that do.
 // expected-error: set_damping: this damping policy has no damping value to set
 #include <pointmass/particle.hpp>

@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: BSL-1.0
 // A position policy whose equation is dimensionally wrong (p0 + v0 t^2: metres plus
 // metre-seconds) compiles on plain numbers but not in the SI particle's step. The error is
-// the sum in the policy (line 14, column 15), between a length and a length times a time.
-// expected-error: step_equation_dimension_error.cpp:14:15: error: no match for
-// expected-error: step_equation_dimension_error.cpp:14:15: error: invalid operands to binary expression
+// the sum in the policy (line 15, column 15), between a length and a length times a time.
+// expected-error: step_equation_dimension_error.cpp:15:15: error: no match for
+// expected-error: step_equation_dimension_error.cpp:15:15: error: invalid operands to binary expression
 #include <pointmass/units.hpp>
 
 namespace si = boost::units::si;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A ParticleSystem feature tag the library does not know (a user's own type in the list).
 // expected-error: is_feature_v<Features> && ...) [with Features = {Colour}]
 // expected-error: is_feature_v<Colour>' evaluated to false

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A velocity given where a position belongs.
 // expected-error: set_position: wrong dimension
 #include <pointmass/units.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Each generator against its formula worked by hand, the reference engine's bugs pinned by
 // regression tests, bad parameters rejected, and the batch path equal to the particle path.
 #include <doctest/doctest.h>

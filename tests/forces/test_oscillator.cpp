@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The damped spring: the closed form against textbook solutions and Boost.Odeint's
 // runge_kutta_dopri5 in all three damping regimes; the stiff spring's exact impulse; a
 // spring's period and a damped spring's decay as integrated; energy per position policy.

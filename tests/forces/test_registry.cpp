@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The registry: add, remove and clear work (the reference engine declares remove and clear
 // but never defines them), and compile-time known and type-erased generators give the same
 // forces.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Finite input never gives NaN, and input beyond a generator's range is reported, not added:
 // positions and velocities near the top of the range (1e20 in float, 1e155 in double, where
 // x^2 overflows) and springs compressed below where x^2 underflows; huge masses, depths,

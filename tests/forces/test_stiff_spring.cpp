@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // StiffSpring::advance: the closed-form step. Alone, it is the closed form at any step (period,
 // amplitude and every sample against damped_oscillator and Boost.Odeint, at steps from 1e-4 s
 // to far beyond the explicit stability limit w0 t = 2); with gravity it converges at second

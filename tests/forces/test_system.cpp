@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Force generators on the batch: a ParticleSystem with features::ForceAccumulator satisfies the Bodies
 // concept itself, and its arrays can be wrapped in SoaBodies; both give a particle's bits.
 #include <doctest/doctest.h>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # cmake -DPROGRAM=... -DCASE=... -DEXPECTED=<regex> -P contract_abort.cmake
 # Passes when PROGRAM CASE was killed by abort (SIGABRT) and its stderr matches EXPECTED.
 execute_process(COMMAND "${PROGRAM}" "${CASE}"

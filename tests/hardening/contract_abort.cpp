@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Built with -fno-exceptions -fno-rtti: the default contract handler cannot throw, so it must
 // print the violation (function, argument, value, requirement) to stderr and abort. The
 // program breaks the contract named by its argument; contract_abort.cmake runs it and checks

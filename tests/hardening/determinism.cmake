@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Compares the digests two runs of the determinism program print.
 #   cmake -DFIRST=<program> [-DSECOND=<program>] -P determinism.cmake
 # Runs FIRST, then SECOND (FIRST again if not given), and passes when both exit 0 and print

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Determinism: steps a damped spring scene with every damping and position policy pair,
 // float and double, through scalar Particles and through a ParticleSystem side by side, and
 //   * exits 1 unless the two agree bit for bit at every step (the batch promise);

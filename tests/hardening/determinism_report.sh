@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Which builds reproduce the same trajectories: builds determinism.cpp with each compiler and
 # set of flags below, runs it, and prints its digest over every trajectory and whether the
 # scalar and batch paths agreed bit for bit. docs/numerics.md ("Determinism") quotes this.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The doctest main for the hardening suite.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A particle stepped at compile time. damping::None and damping::PerFrame call no maths
 // function, so a whole trajectory is a constant expression with every position policy
 // (position::Exact too, paired with None: its series are plain arithmetic); PerSecond,

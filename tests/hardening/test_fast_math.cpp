@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Built with -ffast-math (which implies -ffinite-math-only): the compilers then fold
 // isnan(x) and isinf(x) to false, so validation that used them accepted NaN silently. The
 // library tells NaN and infinity by bit pattern, so every check below still rejects.

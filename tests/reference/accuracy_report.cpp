@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Writes docs/accuracy.md to standard output. Every figure in it is computed here.
 //   cmake --build <dir> --target accuracy_report && <dir>/tests/reference/accuracy_report > docs/accuracy.md
 #include <cmath>

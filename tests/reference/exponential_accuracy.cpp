@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The accuracy of detail/exponential.hpp's d^t = pow_unit(split_log(d), t) and of
 // d^t - 1 = exp_unit(split_log(d), t).kept_minus_one, against an oracle that shares none of
 // its code: __float128 (libquadmath's expq / expm1q / logq, 113-bit significand) where the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Every policy combination, float and double, at 1/30, 1/60, 1/120 and 1/240 s, against the
 // continuous model it approximates (closed form without a spring, Odeint with one):
 //   * double: the error at each finer step is at most twice the error at 1/30 s scaled by

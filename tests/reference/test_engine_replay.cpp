@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Code ported from the reference engine keeps its trajectories: Particle<R,
 // damping::AccelerateThenDamp, position::Euler> against the engine's particle as the
 // specification describes it (tests/support/reference_engine.*, its integrate compiled in its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // damping::Exact with position::Exact: the closed form of constant acceleration with linear
 // per-second damping, so no truncation error at any frame time, one 5 s step included.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The references themselves: Odeint's dopri5 at tolerance 1e-12 agrees with the closed forms,
 // so either can judge the library.
 #include <cmath>

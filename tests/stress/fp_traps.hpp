@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Traps the floating-point exceptions that mean a NaN or an infinity was made (invalid,
 // divide-by-zero, overflow) while the guard lives: the process stops with SIGFPE at the
 // faulting operation, so the test fails there. Where feenableexcept is missing the flags

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Stress tests of numerical stability. Every run happens with the floating-point exceptions
 // invalid, divide-by-zero and overflow trapped (fp_traps.hpp): finite, in-range input must
 // never make a NaN or an infinity. Results are checked after the guard is gone.

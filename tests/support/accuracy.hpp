@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Accuracy measurement shared by the reference tests, the accuracy report and the
 // accuracy-comparison example: the scenes as continuous models, every policy combination,
 // simulation with the library, errors against the reference, orders, error bounds, energy

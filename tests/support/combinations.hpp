@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Test support: every precision x damping x position combination, as a type list for
 // doctest's TEST_CASE_TEMPLATE_APPLY, and an independent long double oracle of one step of
 // each policy's equation (written from the equations, not from the library's code).

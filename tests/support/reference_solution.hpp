@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Reference solutions of the continuous model every policy combination approximates.
 //
 // The model of one particle, with the resulting acceleration of a constant acceleration g, a

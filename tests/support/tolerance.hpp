@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Test support: comparisons with tolerances in units of the type's epsilon.
 #pragma once
 

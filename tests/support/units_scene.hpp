@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The scene that compares the plain and the SI particle (benchmarks/units_cost.cpp times it,
 // tests/units/units_instructions.cpp counts its instructions): 1024 particles launched with
 // the four ballistic shots in turn, then for 150 frames of 1/30 s a push (add_force) and a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Shared by the ParticleSystem tests: a reproducible scene of particles, and bit-for-bit
 // comparison of a system against the equivalent scalar Particles.
 #pragma once

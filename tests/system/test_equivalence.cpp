@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A system and the equivalent scalar Particles, stepped side by side, agree bit for bit:
 // each particle's step is advance<D, P> on x, y and z apart, the same operations in the same
 // order as Particle::integrate on a Vector3, so nothing may differ (not even by one ulp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // What each compile-time choice stores and computes, spawning and killing, lifetimes,
 // capacity, spans, the staggered block, and the contracts of the setters.
 #include <doctest/doctest.h>

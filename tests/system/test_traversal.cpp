@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The step's traversal. While the arrays take more than alternation_floor_bytes and at most
 // alternation_limit_bytes, successive steps walk the particles forwards and backwards in
 // turn (backwards: the part past the last whole chunk first, then whole chunks of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Compiled (not run) by the vectorisation tests: steps one configuration, the system type
 // POINTMASS_PROBE_SYSTEM given on the command line, so that the compiler's vectorisation
 // report can only be about that configuration's loops (the list of configurations is in

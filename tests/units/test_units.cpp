@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The SI particle (units.hpp): same results as the plain particle, bit for bit; quantities
 // with the right units at the boundary; the step's equations type-checked on quantities; the
 // same contract errors; no extra storage.

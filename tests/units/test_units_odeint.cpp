@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Boost.Odeint on a Boost.Units state: the mass on a spring, integrated by odeint's classic
 // Runge-Kutta with a state of (length, velocity) quantities, is the reference for the SI
 // particle. This file compiles slowly (odeint's fusion algebra over quantities) and is the

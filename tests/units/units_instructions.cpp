@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // units_instructions — the work whose instruction count scripts/units-cost.sh compares: the
 // same scene stepped by the plain and the SI particle (1024 particles launched with the four
 // shots, a push and a step each frame for 150 frames of 1/30 s, as benchmarks/units_cost).

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSL-1.0
 # compile.sh NVCC INCLUDE_DIR SOURCE OUTPUT: compiles SOURCE with nvcc -std=c++20, warnings as
 # errors. Exits 77 (CTest: skipped) with the reason when nvcc is missing.
 nvcc=$1 include=$2 source=$3 output=$4

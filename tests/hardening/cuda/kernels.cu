@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The headers under nvcc -std=c++20: kernels that step Particles (every damping and position
 // policy, float and double) and a ParticleSystem through its POINTMASS_HD step_particle,
 // as a CUDA loop over the particles would. Compiled only (no GPU is needed): the test is that

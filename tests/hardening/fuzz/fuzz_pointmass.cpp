@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Fuzz target: drives Particle (every damping x position pair), ParticleSystem (ten feature
 // sets and policy pairs: operation sequences checked against a reference model, see
 // "ParticleSystem" below) and the force generators, float and double, through the public

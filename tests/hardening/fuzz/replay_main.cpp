@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Runs the fuzz target once on each file named on the command line (the corpus), for builds
 // without libFuzzer: g++, the sanitizer build, the build without exceptions. Exits 0 when
 // every input passed; a failed check aborts inside the target, naming what failed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A user's program: one second of free fall with the full position update is exact.
 #include <pointmass/pointmass.hpp>
 
