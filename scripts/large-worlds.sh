@@ -49,24 +49,17 @@ for kind, title in (("Sparks", "sparks: per-second damping, p + v t, gravity"),
         target = " / ".join(targets[variant]) if variant in targets and kind == "Sparks" else ""
         print(f"| {label} | {size} | " + " | ".join(cells) + " | " + " | ".join(costs) + f" | {target} |")
     if kind == "Sparks":
-        # The bound: the same arithmetic written by hand over plain arrays of each storage.
-        for variant, label, size in (("float", "by hand: float positions", 24),
-                                     ("double", "by hand: double positions", 36),
-                                     ("compensated", "by hand: float pair (TwoSum)", 36)):
-            name = f"BM_HandSparks<Storage::{variant}_positions>"
-            base = "BM_HandSparks<Storage::float_positions>"
-            cells = [f"{rate[f'{name}/{n}']:,.0f}" for n in sizes]
-            costs = [f"{rate[f'{base}/{n}'] / rate[f'{name}/{n}']:.2f}" for n in sizes]
-            print(f"| {label} | {size} | " + " | ".join(cells) + " | " + " | ".join(costs) + " | the bound |")
-        # What the bytes alone cost: every byte loaded, one addition, stored back.
-        for variant, label, size in (("float", "bytes only: float positions", 24),
-                                     ("double", "bytes only: double positions", 36),
-                                     ("compensated", "bytes only: float pair", 36)):
-            name = f"BM_Traffic<Storage::{variant}_positions>"
-            base = "BM_Traffic<Storage::float_positions>"
-            cells = [f"{rate[f'{name}/{n}']:,.0f}" for n in sizes]
-            costs = [f"{rate[f'{base}/{n}'] / rate[f'{name}/{n}']:.2f}" for n in sizes]
-            print(f"| {label} | {size} | " + " | ".join(cells) + " | " + " | ".join(costs) + " | the bytes alone |")
+        # The bound: the same arithmetic written by hand over plain arrays of each storage;
+        # and what the bytes alone cost: every byte loaded, one addition, stored back.
+        for benchmark, prefix, pair, note in (("BM_HandSparks", "by hand", "float pair (TwoSum)", "the bound"),
+                                              ("BM_Traffic", "bytes only", "float pair", "the bytes alone")):
+            for variant, label, size in (("float", "float positions", 24), ("double", "double positions", 36),
+                                         ("compensated", pair, 36)):
+                name = f"{benchmark}<Storage::{variant}_positions>"
+                base = f"{benchmark}<Storage::float_positions>"
+                cells = [f"{rate[f'{name}/{n}']:,.0f}" for n in sizes]
+                costs = [f"{rate[f'{base}/{n}'] / rate[f'{name}/{n}']:.2f}" for n in sizes]
+                print(f"| {prefix}: {label} | {size} | " + " | ".join(cells) + " | " + " | ".join(costs) + f" | {note} |")
     print()
 PY
 publish_table "$doc" cost "$cost"
