@@ -10,7 +10,8 @@
 //     equations, the same results bit for bit: tests/reference/test_engine_replay.cpp);
 //   * a hand-written loop over a plain struct doing the default Particle's arithmetic at a
 //     fixed step (its retention d^t kept per particle, as a hand-tuned game loop would);
-//   * `ParticleSystem` configurations (BM_System, below).
+//   * `ParticleSystem` configurations (BM_System, below);
+//   * the power function alone at the changing step lengths (BM_PowAlone).
 // scripts/benchmark-engine.sh runs it with interleaved repetitions and writes the table of
 // medians and ratios into docs/performance.md. Counters: items_per_second = particle-steps/s.
 #include <pointmass/particle.hpp>
@@ -223,6 +224,28 @@ void BM_BandwidthBytes(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
 }
 
+// --- the power function alone -------------------------------------------------------------------
+
+// What a step length that changes every step costs both loops of the engine's equations (its
+// particles and Particle<R, AccelerateThenDamp, Euler>) before anything else: the C library's
+// pow of each particle's damping (real_pow, as both call it), one per particle and step,
+// stored, at the same alternating lengths. Their rates over this one say how much of each
+// loop's time the rest of its step takes.
+template <class R>
+void BM_PowAlone(benchmark::State& state) {
+  const auto count = static_cast<std::size_t>(state.range(0));
+  std::vector<R> damping(count, damping_value<R>);
+  std::vector<R> kept(count);
+  std::int64_t step = 0;
+  for (auto _ : state) {
+    const R t = varying_duration<R>(step++);
+    for (std::size_t i = 0; i < count; ++i) kept[i] = real_pow(damping[i], t);
+    benchmark::DoNotOptimize(kept.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
+}
+
 // --- ParticleSystem rows --------------------------------------------------------------------------
 // BM_System<Config>: the place for the batch's rows. Config::System is a ParticleSystem type;
 // the engine's job needs per-particle damping, acceleration, mass and forces (FullFeatured);
@@ -345,7 +368,8 @@ void sizes(benchmark::internal::Benchmark* b) {
   BENCHMARK(BM_System<Lean<R>>)->Apply(sizes);                                                   \
   BENCHMARK(BM_BandwidthFullFeatured<R>)->Arg(1000000);                                          \
   BENCHMARK(BM_BandwidthBytes<R, sizeof(Particle<R>)>)->Arg(1000000);                            \
-  BENCHMARK(BM_BandwidthBytes<R, sizeof(HandParticle<R>)>)->Arg(1000000)
+  BENCHMARK(BM_BandwidthBytes<R, sizeof(HandParticle<R>)>)->Arg(1000000);                        \
+  BENCHMARK(BM_PowAlone<R>)->Apply(sizes)
 
 POINTMASS_ENGINE_BENCHMARKS(float);
 POINTMASS_ENGINE_BENCHMARKS(double);

@@ -46,6 +46,8 @@ for real in ("float", "double"):
             ("`ParticleSystem`, the same with uniform damping",
              f"BM_System<UniformDampingFeatured<{real}>>", engine),
             ("`ParticleSystem<R>` (lean: uniform damping and gravity)", f"BM_System<Lean<{real}>>", engine),
+            ("the C library's pow alone, one per particle, step length changing every step",
+             f"BM_PowAlone<{real}>", engine_varying),
             ("memory bound: read-modify-write of the full-featured system's arrays",
              f"BM_BandwidthFullFeatured<{real}>", engine),
             ("memory bound: read-modify-write of a vector of `Particle<R>`'s bytes",
@@ -85,6 +87,11 @@ for real in ("float", "double"):
     line("`Particle<R, AccelerateThenDamp, Euler>` changing step / engine changing step",
          f"BM_Particles<{real}, damping::AccelerateThenDamp, position::Euler, true>", engine_varying,
          ">= 1.0")
+    line("engine changing step / pow alone", engine_varying, f"BM_PowAlone<{real}>",
+         "(the share of its time the pow takes)")
+    line("`Particle<R, AccelerateThenDamp, Euler>` changing step / pow alone",
+         f"BM_Particles<{real}, damping::AccelerateThenDamp, position::Euler, true>",
+         f"BM_PowAlone<{real}>", "(the same for the Particle)")
     line("full-featured system / engine", f"BM_System<FullFeatured<{real}>>", engine,
          ">= 10, 4, 2 (float); >= 5, 2 (double)")
     line("full-featured system / the same with uniform damping", f"BM_System<FullFeatured<{real}>>",
