@@ -232,7 +232,9 @@ class KokkosSystem {
   void copy_to(System& system) const {
     system.reserve(size());
     while (system.size() > size()) system.kill(system.size() - 1);
-    while (system.size() < size()) system.spawn(Vector3<real>{}, Vector3<real>{});
+    while (system.size() < size()) {
+      system.spawn(Vector3<typename System::position_value>{}, Vector3<real>{});
+    }
     Arrays host = system.arrays();
     const std::size_t count = size();
     Layout::for_each_array_pair(host, arrays_, [count](auto* to, auto* from) {

@@ -69,7 +69,10 @@ System make_scene(std::size_t count, std::uint32_t seed) {
     system.set_damping(R(0.6));
   }
   for (std::size_t i = 0; i < count; ++i) {
-    REQUIRE(system.spawn(random_vector(engine, R(100)), random_vector(engine, R(30))) == i);
+    const Vector3<R> position = random_vector(engine, R(100));
+    using Value = typename System::position_value;  // R, or wider (precision.hpp)
+    REQUIRE(system.spawn({Value(position.x), Value(position.y), Value(position.z)},
+                         random_vector(engine, R(30))) == i);
     if constexpr (System::per_particle_acceleration) {
       system.set_acceleration(i, random_vector(engine, R(20)));
     }
@@ -105,7 +108,7 @@ void check_equivalence(std::size_t count, int steps, std::uint32_t seed) {
   // The loop KokkosSystem::step runs on a device (one particle per index), run here too.
   DeviceSystem<System> each(host);
   REQUIRE(device.size() == count);
-  const Vector3<R> start = host.position(count - 1);
+  const auto start = host.position(count - 1);  // wider than R with wide positions
   for (int step = 0; step < steps; ++step) {
     const R t = durations<R>[static_cast<std::size_t>(step) % durations<R>.size()];
     host.step(t);

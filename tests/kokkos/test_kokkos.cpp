@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 // KokkosSystem's own behaviour: copies both ways carry every stored array and the uniform
 // values, expiry leaves the order swap-remove leaves, settings steer the step, views see the
-// arrays, a bad duration is reported and changes nothing.
+// arrays, a bad duration is reported and changes nothing; systems with wide positions step
+// as the host steps them.
 #include "kokkos_support.hpp"
 
 #include <stdexcept>
@@ -51,6 +52,17 @@ TEST_CASE("copy_from and copy_to carry every stored array and the uniform values
   CHECK(test::same_arrays(back, sparks));
   CHECK(back.damping() == 0.25f);
   CHECK(back.acceleration() == Vector3<float>{1.0f, 2.0f, 3.0f});
+}
+
+// Positions stored wider than the arithmetic (precision.hpp): double, and a compensated float
+// pair whose error terms are arrays of their own, carried and stepped as the others are.
+TEST_CASE_TEMPLATE("wide positions: Kokkos equals ParticleSystem::step, bit for bit", S,
+                   Precision<float, double>, Precision<float, Compensated<float>>) {
+  using System = ParticleSystem<S, damping::PerSecond, position::Euler, features::Lifetime>;
+  static_assert(!std::is_same_v<typename System::position_value, float>);
+  for (const std::size_t count : {std::size_t{17}, std::size_t{257}}) {
+    test::check_equivalence<System>(count, 1000, 11);
+  }
 }
 
 TEST_CASE("reserve keeps the particles, and copy_from into a smaller capacity grows") {
