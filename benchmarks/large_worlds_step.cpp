@@ -152,8 +152,8 @@ void BM_HandSparks(benchmark::State& state) {
 
 // The least a step can do with the storage: load every byte the sparks' step loads, add a
 // constant, and store it back (one addition per element, no conversion, no TwoSum). Its time
-// against all-float's is what the bytes alone cost on this machine: a cost ratio below it is
-// out of reach of any loop over that storage.
+// against all-float's is what the bytes alone cost on this machine: a step that does little
+// besides its loads and stores costs about that ratio too.
 template <Storage S, class P>
 void touch_columns(P* __restrict px, P* __restrict py, P* __restrict pz, float* __restrict ex,
                    float* __restrict ey, float* __restrict ez, float* __restrict vx,
