@@ -5,7 +5,8 @@
 // docs/forces.md.
 //
 //   forces/bodies.hpp      what a generator acts on: PlainBody, SteppableBody, Bodies concepts;
-//                          SpanBodies and SoaBodies adapters
+//                          SpanBodies and SoaBodies adapters; relative_to (a particle or
+//                          system with wide positions, seen from a local origin)
 //   forces/apply.hpp       FieldGenerator; update_force(generator, body, t); apply(generator,
 //                          bodies, t)
 //   forces/generators.hpp  Gravity, Drag, AnchoredSpring/Bungee, Spring/Bungee, Buoyancy,

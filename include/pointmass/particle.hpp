@@ -139,17 +139,20 @@ class BasicParticle {
     }
   }
   /// The position relative to `origin` (a camera), as float numbers (metres): computed from
-  /// the whole stored position, and exact wherever the true offset is a float.
-  POINTMASS_HD constexpr Vector3<float> position_relative_to(
+  /// the whole stored position, and exact wherever the true offset is a float. T = real gives
+  /// it in the arithmetic's own type, as a force generator sees it (forces::relative_to).
+  template <Real T = float>
+  POINTMASS_HD constexpr Vector3<T> position_relative_to(
       const Vector3<position_type>& origin) const noexcept {
     const Vector3<position_value> o = raw(origin);
     if constexpr (Storage::compensated) {
-      return {Storage::relative(position_.x, position_error_.x, o.x),
-              Storage::relative(position_.y, position_error_.y, o.y),
-              Storage::relative(position_.z, position_error_.z, o.z)};
+      return {Storage::template relative<T>(position_.x, position_error_.x, o.x),
+              Storage::template relative<T>(position_.y, position_error_.y, o.y),
+              Storage::template relative<T>(position_.z, position_error_.z, o.z)};
     } else {
-      return {Storage::relative(position_.x, o.x), Storage::relative(position_.y, o.y),
-              Storage::relative(position_.z, o.z)};
+      return {Storage::template relative<T>(position_.x, o.x),
+              Storage::template relative<T>(position_.y, o.y),
+              Storage::template relative<T>(position_.z, o.z)};
     }
   }
   /// The stored position's numbers: the position itself when it is stored as `real` or a

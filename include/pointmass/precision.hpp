@@ -178,10 +178,12 @@ struct PositionStorage {
   POINTMASS_HD static constexpr value value_of(element p) noexcept { return p; }
   /// The stored component of a value (the value is already finite).
   POINTMASS_HD static constexpr element element_of(value x) noexcept { return x; }
-  /// p - origin, rounded once to float: exact when the true offset is a float (then it is
-  /// an element too, and IEEE subtraction returns it exactly).
-  POINTMASS_HD static constexpr float relative(element p, value origin) noexcept {
-    return static_cast<float>(p - origin);
+  /// p - origin, rounded once to T (float for a renderer, the arithmetic's Real for a force
+  /// generator): exact when the true offset is a T (then it is an element too, and IEEE
+  /// subtraction returns it exactly).
+  template <Real T = float>
+  POINTMASS_HD static constexpr T relative(element p, value origin) noexcept {
+    return static_cast<T>(p - origin);
   }
 };
 
@@ -214,11 +216,12 @@ struct PositionStorage<Compensated<R>> {
     return static_cast<R>(x - static_cast<value>(static_cast<R>(x)));
   }
   /// hi + lo - origin: hi - origin = s + e exactly (TwoSum), s + lo = s2 + e2 exactly
-  /// (TwoSum), and the offset is s2 + (e + e2), rounded to float at the end. For a camera
-  /// near the particle (|origin| within a factor of two of |hi|) e is 0 and s2 is the offset
-  /// rounded once to double, so a float offset comes out exact; the error terms keep what the
-  /// double sums round away when the camera is far from the particle.
-  POINTMASS_HD static constexpr float relative(R hi, R lo, value origin) noexcept {
+  /// (TwoSum), and the offset is s2 + (e + e2), rounded to T (float, or R) at the end. For a
+  /// camera near the particle (|origin| within a factor of two of |hi|) e is 0 and s2 is the
+  /// offset rounded once to the wider type, so an offset that is a T comes out exact; the
+  /// error terms keep what the wide sums round away when the camera is far from the particle.
+  template <Real T = float>
+  POINTMASS_HD static constexpr T relative(R hi, R lo, value origin) noexcept {
     const value h = static_cast<value>(hi);
     const value s = h - origin;
     const value b = s - h;
@@ -227,7 +230,7 @@ struct PositionStorage<Compensated<R>> {
     const value s2 = s + l;
     const value b2 = s2 - s;
     const value e2 = (s - (s2 - b2)) + (l - b2);
-    return static_cast<float>(s2 + (e + e2));
+    return static_cast<T>(s2 + (e + e2));
   }
 };
 

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
-// Force generators act on bodies whose positions are in the arithmetic's type: a system with
-// positions stored wider (precision.hpp) is not `forces::Bodies`, and apply says so
-// (docs/large-worlds.md: forces on wide positions).
-// expected-error: does not satisfy return-type-requirement
-// expected-error: does not satisfy 'Bodies'
+// Force generators compute in the arithmetic's type: a system with positions stored wider
+// (precision.hpp) reaches them through forces::relative_to(system, origin), and apply on the
+// system itself says so in one sentence (docs/large-worlds.md: forces on wide positions).
+// expected-error: pass forces::relative_to(bodies, origin)
 #include <pointmass/forces.hpp>
 #include <pointmass/particle_system.hpp>
 

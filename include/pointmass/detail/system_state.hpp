@@ -326,16 +326,17 @@ class SystemState {
       return load(a.position_x, a.position_y, a.position_z, i);
     }
   }
-  static Vector3<float> relative(const Arrays& a, std::size_t i,
-                                 const Vector3<position_value>& origin) noexcept {
+  template <Real T>
+  static Vector3<T> relative(const Arrays& a, std::size_t i,
+                             const Vector3<position_value>& origin) noexcept {
     if constexpr (compensated) {
-      return {Storage::relative(a.position_x[i], a.position_error_x[i], origin.x),
-              Storage::relative(a.position_y[i], a.position_error_y[i], origin.y),
-              Storage::relative(a.position_z[i], a.position_error_z[i], origin.z)};
+      return {Storage::template relative<T>(a.position_x[i], a.position_error_x[i], origin.x),
+              Storage::template relative<T>(a.position_y[i], a.position_error_y[i], origin.y),
+              Storage::template relative<T>(a.position_z[i], a.position_error_z[i], origin.z)};
     } else {
-      return {Storage::relative(a.position_x[i], origin.x),
-              Storage::relative(a.position_y[i], origin.y),
-              Storage::relative(a.position_z[i], origin.z)};
+      return {Storage::template relative<T>(a.position_x[i], origin.x),
+              Storage::template relative<T>(a.position_y[i], origin.y),
+              Storage::template relative<T>(a.position_z[i], origin.z)};
     }
   }
 

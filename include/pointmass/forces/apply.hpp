@@ -3,7 +3,9 @@
 //
 // Owns: the FieldGenerator concept (a generator whose force depends on one body's own state:
 // `force(p, v, inverse_mass, t)`), the free `update_force(generator, body, t)` that adds a
-// generator's force to one body, and `apply(generator, bodies, t)` for a batch.
+// generator's force to one body, and `apply(generator, bodies, t)` for a batch; for a body or
+// batch with wide positions (bodies.hpp: WideBody, WideBodies), the one-sentence error that
+// points to relative_to.
 // Must not include: particle.hpp, particle_system.hpp, a generator's header (every generator
 // reaches bodies through these two functions; none needs them to be declared first).
 #pragma once
@@ -65,6 +67,24 @@ constexpr void apply(const G& generator, B& bodies, typename B::real duration) {
   }
 #endif
   for (std::size_t i = 0; i < n; ++i) bodies.add_force(i, force_on(i));
+}
+
+/// A particle or batch with positions stored wider than its arithmetic (Precision<float,
+/// double>, ...) reaches the generators through relative_to(body, origin) (bodies.hpp); passed
+/// as it is, it gets this sentence rather than a list of unmet requirements.
+template <class G, WideBody B>
+void update_force(G&, B&, typename B::real) {
+  static_assert(sizeof(B) == 0,
+                "forces::update_force: this particle stores its position wider than its "
+                "arithmetic; pass forces::relative_to(particle, origin), with an origin near the "
+                "forces' anchors (docs/large-worlds.md, forces on wide positions)");
+}
+template <class G, WideBodies B>
+void apply(const G&, B&, typename B::real) {
+  static_assert(sizeof(B) == 0,
+                "forces::apply: these bodies store their positions wider than their arithmetic; "
+                "pass forces::relative_to(bodies, origin), with an origin near the forces' "
+                "anchors (docs/large-worlds.md, forces on wide positions)");
 }
 
 }  // namespace pointmass::forces

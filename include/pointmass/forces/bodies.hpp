@@ -2,9 +2,11 @@
 // pointmass/forces/bodies.hpp — what a force generator acts on.
 //
 // Owns: the body concepts (PlainBody: one particle over plain numbers; SteppableBody: a
-// PlainBody whose state a closed-form step may set; Bodies: a batch indexed 0 .. size() - 1)
-// and the batch adapters SpanBodies (arrays of Vector3s) and SoaBodies (one array per
-// component).
+// PlainBody whose state a closed-form step may set; Bodies: a batch indexed 0 .. size() - 1;
+// WideBody and WideBodies: a particle or batch whose positions are stored wider than its
+// arithmetic, precision.hpp), the batch adapters SpanBodies (arrays of Vector3s) and SoaBodies
+// (one array per component), and relative_to (RelativeBody, RelativeBodies): a wide particle or
+// batch seen by generators from a local origin.
 // Must not include: particle.hpp, particle_system.hpp (the concepts are what those satisfy; a
 // generator never needs the concrete types), or another forces header.
 #pragma once
@@ -12,6 +14,7 @@
 #include <concepts>
 #include <cstddef>
 #include <span>
+#include <type_traits>
 
 #include "../real.hpp"
 #include "../vector3.hpp"
@@ -93,5 +96,115 @@ struct SoaBodies {
     fz[i] += f.z;
   }
 };
+
+// --- positions stored wider than the arithmetic (precision.hpp) ---------------------------------
+//
+// A Particle or ParticleSystem of Precision<float, double> (or Compensated positions) keeps its
+// position in a wider type than the float its generators compute in, so it is not a PlainBody
+// or Bodies: rounding its position to float for a generator would give back, far from the
+// origin, the centimetres the wide storage keeps. relative_to(body, origin) shows it to the
+// generators as positions relative to `origin`, computed from the whole stored position and
+// rounded once to the arithmetic's type: exact wherever the offset is a number of that type,
+// and within its rounding of the offset otherwise. Choose the origin near what the generators
+// compare positions with (a spring's anchor, the water's surface, the camera) and give those
+// in the same frame: a spring's anchor at 3 m from the origin is `{3, 0, 0}`. Velocities,
+// masses and forces are the particle's own; forces go to its accumulator as from any body.
+
+/// A particle whose position is stored wider than its arithmetic: Particle<Precision<float,
+/// double>> or Particle<Precision<float, Compensated<float>>> (plain numbers).
+template <class B>
+concept WideBody = requires(B& b, const B& cb, const Vector3<typename B::position_type>& origin,
+                            const Vector3<typename B::real>& f) {
+  requires !std::same_as<typename B::position_type, typename B::real>;
+  {
+    cb.template position_relative_to<typename B::real>(origin)
+  } -> std::same_as<Vector3<typename B::real>>;
+  { cb.velocity() } -> std::same_as<Vector3<typename B::real>>;
+  { cb.inverse_mass() } -> std::same_as<typename B::real>;
+  { cb.has_finite_mass() } -> std::same_as<bool>;
+  b.add_force(f);
+};
+
+/// A batch whose positions are stored wider than its arithmetic: a ParticleSystem of
+/// Precision<float, double> or Precision<float, Compensated<float>> with a force accumulator.
+template <class B>
+concept WideBodies = requires(B& b, const B& cb, std::size_t i,
+                              const Vector3<typename B::position_value>& origin) {
+  requires !std::same_as<typename B::position_value, typename B::real>;
+  { cb.size() } -> std::convertible_to<std::size_t>;
+  {
+    cb.template position_relative_to<typename B::real>(i, origin)
+  } -> std::same_as<Vector3<typename B::real>>;
+  { cb.velocity(i) } -> std::same_as<Vector3<typename B::real>>;
+  { cb.inverse_mass(i) } -> std::same_as<typename B::real>;
+  b.add_force(i, Vector3<typename B::real>{});
+};
+
+/// A wide particle seen from `origin`: a PlainBody whose position is the particle's relative to
+/// the origin. It refers to the particle (which must outlive it) and copies the origin.
+template <WideBody P>
+class RelativeBody {
+ public:
+  using real = typename P::real;
+  using position_type = typename P::position_type;
+
+  constexpr RelativeBody(P& body, const Vector3<position_type>& origin) noexcept
+      : body_(&body), origin_(origin) {}
+
+  constexpr Vector3<real> position() const noexcept {
+    return body_->template position_relative_to<real>(origin_);
+  }
+  constexpr Vector3<real> velocity() const noexcept { return body_->velocity(); }
+  constexpr real inverse_mass() const noexcept { return body_->inverse_mass(); }
+  constexpr bool has_finite_mass() const noexcept { return body_->has_finite_mass(); }
+  constexpr void add_force(const Vector3<real>& f) { body_->add_force(f); }
+
+  constexpr const Vector3<position_type>& origin() const noexcept { return origin_; }
+  constexpr P& body() const noexcept { return *body_; }
+
+ private:
+  P* body_;
+  Vector3<position_type> origin_;
+};
+
+/// A wide batch seen from `origin`: Bodies whose positions are the batch's relative to the
+/// origin. It refers to the batch (which must outlive it) and copies the origin.
+template <WideBodies B>
+class RelativeBodies {
+ public:
+  using real = typename B::real;
+  using position_value = typename B::position_value;
+
+  constexpr RelativeBodies(B& bodies, const Vector3<position_value>& origin) noexcept
+      : bodies_(&bodies), origin_(origin) {}
+
+  std::size_t size() const noexcept { return static_cast<std::size_t>(bodies_->size()); }
+  Vector3<real> position(std::size_t i) const {
+    return bodies_->template position_relative_to<real>(i, origin_);
+  }
+  Vector3<real> velocity(std::size_t i) const { return bodies_->velocity(i); }
+  real inverse_mass(std::size_t i) const { return bodies_->inverse_mass(i); }
+  void add_force(std::size_t i, const Vector3<real>& f) { bodies_->add_force(i, f); }
+
+  constexpr const Vector3<position_value>& origin() const noexcept { return origin_; }
+  constexpr B& bodies() const noexcept { return *bodies_; }
+
+ private:
+  B* bodies_;
+  Vector3<position_value> origin_;
+};
+
+/// `body` (a particle with wide positions) as generators see it from `origin`.
+template <WideBody P>
+constexpr RelativeBody<P> relative_to(P& body,
+                                      const Vector3<typename P::position_type>& origin) noexcept {
+  return RelativeBody<P>(body, origin);
+}
+/// `bodies` (a batch with wide positions) as generators see them from `origin`.
+template <WideBodies B>
+constexpr RelativeBodies<B> relative_to(B& bodies,
+                                        const Vector3<typename B::position_value>& origin) noexcept {
+  return RelativeBodies<B>(bodies, origin);
+}
 
 }  // namespace pointmass::forces

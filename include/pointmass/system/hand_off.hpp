@@ -50,11 +50,13 @@ class SystemHandOff : public Base {
     this->copy_vectors("copy_positions", R(1), out);
   }
   /// Particle i's position relative to `origin` (a camera), as float: from the whole
-  /// stored position, exact wherever the true offset is a float (precision.hpp).
-  Vector3<float> position_relative_to(std::size_t i, const Vector3<position_value>& origin) const
+  /// stored position, exact wherever the true offset is a float (precision.hpp). T = R gives
+  /// it in the arithmetic's own type, as a force generator sees it (forces::relative_to).
+  template <Real T = float>
+  Vector3<T> position_relative_to(std::size_t i, const Vector3<position_value>& origin) const
       noexcept(!POINTMASS_HOST_CHECKS) {
     if (!this->valid_index("position_relative_to", i)) return {};
-    return Base::relative(this->arrays(), i, origin);
+    return Base::template relative<T>(this->arrays(), i, origin);
   }
   /// Every particle's position relative to `origin`, as float, into `buffer` (at least
   /// size() elements; element i for particle i): what a renderer uploads. A buffer too small
@@ -65,7 +67,7 @@ class SystemHandOff : public Base {
       return;
     }
     const typename Base::Arrays a = this->arrays();
-    for (std::size_t i = 0; i < a.size; ++i) buffer[i] = Base::relative(a, i, origin);
+    for (std::size_t i = 0; i < a.size; ++i) buffer[i] = Base::template relative<float>(a, i, origin);
   }
 };
 

@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: BSL-1.0
+// Force generators on particles and systems whose positions are stored wider than their float
+// arithmetic (Precision<float, double>, Precision<float, Compensated<float>>), through
+// forces::relative_to(body, origin): the positions a generator sees are exact where the offset
+// is a float; a spring 1e6 m out moves as the same spring near the origin, where all-float
+// misses by centimetres; drag (velocity only) gives all-float's velocities bit for bit; a
+// Particle and a ParticleSystem get the same bits.
+#include <doctest/doctest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include <pointmass/forces.hpp>
+#include <pointmass/particle.hpp>
+#include <pointmass/particle_system.hpp>
+
+namespace {
+
+namespace pm = pointmass;
+namespace forces = pointmass::forces;
+using pm::Vector3;
+
+using DoublePositions = pm::Precision<float, double>;
+using CompensatedPositions = pm::Precision<float, pm::Compensated<float>>;
+
+template <class S>
+using System =
+    pm::ParticleSystem<S, pm::damping::PerSecond, pm::position::Euler, pm::features::ForceAccumulator>;
+
+static_assert(forces::WideBodies<System<DoublePositions>> &&
+              forces::WideBodies<System<CompensatedPositions>>);
+static_assert(!forces::Bodies<System<DoublePositions>>, "a wide system is not Bodies itself");
+static_assert(forces::Bodies<forces::RelativeBodies<System<CompensatedPositions>>>);
+static_assert(!forces::WideBodies<System<float>> && forces::Bodies<System<float>>);
+static_assert(forces::WideBody<pm::Particle<DoublePositions>> &&
+              !forces::PlainBody<pm::Particle<DoublePositions>, float>);
+static_assert(forces::PlainBody<forces::RelativeBody<pm::Particle<CompensatedPositions>>, float>);
+static_assert(!forces::WideBody<pm::Particle<float>>);
+
+bool same_bits(float a, float b) {
+  return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
+}
+bool same_bits(const Vector3<float>& a, const Vector3<float>& b) {
+  return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
+}
+float largest_difference(const Vector3<float>& a, const Vector3<float>& b) {
+  return std::fmax(std::fabs(a.x - b.x), std::fmax(std::fabs(a.y - b.y), std::fabs(a.z - b.z)));
+}
+
+// The anchor, 1e6 m out: a float exactly, so that all-float starts from the same state.
+constexpr Vector3<double> anchor{1e6, -2.5e5, 5e5};
+constexpr float dt = 1.0f / 60;
+constexpr int steps = 600;
+constexpr std::size_t count = 17;  // the vectorised loop and its remainder both run
+
+Vector3<double> far_from(const Vector3<float>& offset) {  // exact: the sum fits a double
+  return {anchor.x + double(offset.x), anchor.y + double(offset.y), anchor.z + double(offset.z)};
+}
+
+/// Offsets within 5 m of the anchor and velocities within 2 m/s, the same for every system.
+std::vector<std::pair<Vector3<float>, Vector3<float>>> starts() {
+  std::mt19937 random(20);
+  std::uniform_real_distribution<float> offset(-5.0f, 5.0f);
+  std::uniform_real_distribution<float> speed(-2.0f, 2.0f);
+  std::vector<std::pair<Vector3<float>, Vector3<float>>> result(count);
+  for (auto& [p, v] : result) {
+    p = {offset(random), offset(random), offset(random)};
+    v = {speed(random), speed(random), speed(random)};
+  }
+  return result;
+}
+
+template <class S, class Position>
+System<S> system_at(Position position) {
+  System<S> system(count);
+  system.set_damping(0.8f);
+  for (const auto& [p, v] : starts()) system.spawn(position(p), v);
+  return system;
+}
+
+}  // namespace
+
+TEST_CASE_TEMPLATE("relative_to: the positions generators see are exact where the offset is a float", S,
+                   DoublePositions, CompensatedPositions) {
+  // 2^-20 m beyond 1e6 m: a double, and for the pair hi = 1e6, lo = 2^-20; a float at 1e6 m
+  // rounds it away.
+  const double tiny = std::ldexp(1.0, -20);
+  const Vector3<double> p{anchor.x + tiny, anchor.y - 3 * tiny, anchor.z + 0.375};
+  System<S> system(1);
+  system.spawn(p, {});
+  auto local = forces::relative_to(system, anchor);
+  const Vector3<float> expected{float(tiny), float(-3 * tiny), 0.375f};
+  CHECK(same_bits(local.position(0), expected));
+  pm::Particle<S> particle;
+  particle.set_position(p);
+  const auto body = forces::relative_to(particle, anchor);
+  CHECK(same_bits(body.position(), expected));
+  CHECK(body.velocity() == particle.velocity());
+  CHECK(body.inverse_mass() == particle.inverse_mass());
+}
+
+TEST_CASE_TEMPLATE("relative_to: a spring 1e6 m out moves as the same spring near the origin", S,
+                   DoublePositions, CompensatedPositions) {
+  // The anchor is the local origin, so the spring's anchor is {0, 0, 0} in its frame.
+  const forces::AnchoredSpring<float> spring({0, 0, 0}, 20.0f, 1.0f);
+  System<S> far = system_at<S>(far_from);
+  System<float> near = system_at<float>([](const Vector3<float>& p) { return p; });
+  System<float> far_float = system_at<float>([](const Vector3<float>& p) {
+    const Vector3<double> q = far_from(p);
+    return Vector3<float>{float(q.x), float(q.y), float(q.z)};
+  });
+  auto local = forces::relative_to(far, anchor);
+  float from_near = 0;
+  float float_from_near = 0;
+  for (int n = 0; n < steps; ++n) {
+    forces::apply(spring, local, dt);
+    forces::apply(spring, near, dt);
+    // All-float 1e6 m out, with the anchor as a float there: what the wide storage saves.
+    forces::apply(forces::AnchoredSpring<float>(
+                      {float(anchor.x), float(anchor.y), float(anchor.z)}, 20.0f, 1.0f),
+                  far_float, dt);
+    far.step(dt);
+    near.step(dt);
+    far_float.step(dt);
+    for (std::size_t i = 0; i < count; ++i) {
+      from_near = std::fmax(from_near, largest_difference(local.position(i), near.position(i)));
+      const Vector3<float> q = far_float.position(i);
+      const Vector3<float> float_offset{float(double(q.x) - anchor.x),
+                                        float(double(q.y) - anchor.y),
+                                        float(double(q.z) - anchor.z)};
+      float_from_near = std::fmax(float_from_near, largest_difference(float_offset, near.position(i)));
+    }
+  }
+  // The near system rounds its positions (|p| < 8 m) by at most half an ulp of 8 m, 4.8e-7 m,
+  // a step; the wide one far less. Over 600 steps of a damped spring that is at most 2.9e-4 m
+  // of difference; rounding each position to float at 1e6 m (1/16 m apart) would be 100 times
+  // that.
+  INFO("largest difference from the near system: " << from_near << " m; all-float's: "
+                                                     << float_from_near << " m");
+  CHECK(from_near <= 2.9e-4f);
+  CHECK(float_from_near > 1e-2f);
+}
+
+TEST_CASE_TEMPLATE("relative_to: drag gives all-float's velocities bit for bit, the particle the system's bits", S,
+                   DoublePositions, CompensatedPositions) {
+  const forces::Drag<float> drag(0.3f, 0.05f);
+  const forces::AnchoredSpring<float> spring({1, 0, 0}, 12.0f, 0.5f);
+  System<S> wide = system_at<S>(far_from);
+  System<float> plain = system_at<float>([](const Vector3<float>& p) { return p; });
+  auto local = forces::relative_to(wide, anchor);
+  // Particle 0 of the wide system as a Particle, with the spring too (update_force).
+  pm::Particle<S> particle;
+  particle.set_position(far_from(starts()[0].first));
+  particle.set_velocity(starts()[0].second);
+  particle.set_damping(0.8f);
+  System<S> with_spring = system_at<S>(far_from);
+  auto spring_local = forces::relative_to(with_spring, anchor);
+  bool velocities_as_float = true;
+  bool particle_as_system = true;
+  for (int n = 0; n < steps; ++n) {
+    forces::apply(drag, local, dt);
+    forces::apply(drag, plain, dt);
+    wide.step(dt);
+    plain.step(dt);
+    for (std::size_t i = 0; i < count; ++i) {
+      velocities_as_float = velocities_as_float && same_bits(wide.velocity(i), plain.velocity(i));
+    }
+    auto body = forces::relative_to(particle, anchor);
+    forces::update_force(drag, body, dt);
+    forces::update_force(spring, body, dt);
+    forces::apply(drag, spring_local, dt);
+    forces::apply(spring, spring_local, dt);
+    particle.integrate(dt);
+    with_spring.step(dt);
+    particle_as_system = particle_as_system &&
+                         same_bits(particle.velocity(), with_spring.velocity(0)) &&
+                         particle.position() == with_spring.position(0);
+  }
+  CHECK(velocities_as_float);
+  CHECK(particle_as_system);
+}
