@@ -140,58 +140,67 @@ concept WideBodies = requires(B& b, const B& cb, std::size_t i,
   b.add_force(i, Vector3<typename B::real>{});
 };
 
+namespace detail {
+
+/// What both views hold: the viewed particle or batch (not owned: it must outlive the view)
+/// and a copy of the local origin.
+template <class T, class Origin>
+class OriginView {
+ public:
+  constexpr OriginView(T& viewed, const Vector3<Origin>& origin) noexcept
+      : viewed_(&viewed), origin_(origin) {}
+  constexpr const Vector3<Origin>& origin() const noexcept { return origin_; }
+
+ protected:
+  constexpr T& viewed() const noexcept { return *viewed_; }
+
+ private:
+  T* viewed_;
+  Vector3<Origin> origin_;
+};
+
+}  // namespace detail
+
 /// A wide particle seen from `origin`: a PlainBody whose position is the particle's relative to
-/// the origin. It refers to the particle (which must outlive it) and copies the origin.
+/// the origin.
 template <WideBody P>
-class RelativeBody {
+class RelativeBody : public detail::OriginView<P, typename P::position_type> {
+  using View = detail::OriginView<P, typename P::position_type>;
+
  public:
   using real = typename P::real;
   using position_type = typename P::position_type;
-
-  constexpr RelativeBody(P& body, const Vector3<position_type>& origin) noexcept
-      : body_(&body), origin_(origin) {}
+  using View::View;
 
   constexpr Vector3<real> position() const noexcept {
-    return body_->template position_relative_to<real>(origin_);
+    return body().template position_relative_to<real>(this->origin());
   }
-  constexpr Vector3<real> velocity() const noexcept { return body_->velocity(); }
-  constexpr real inverse_mass() const noexcept { return body_->inverse_mass(); }
-  constexpr bool has_finite_mass() const noexcept { return body_->has_finite_mass(); }
-  constexpr void add_force(const Vector3<real>& f) { body_->add_force(f); }
-
-  constexpr const Vector3<position_type>& origin() const noexcept { return origin_; }
-  constexpr P& body() const noexcept { return *body_; }
-
- private:
-  P* body_;
-  Vector3<position_type> origin_;
+  constexpr Vector3<real> velocity() const noexcept { return body().velocity(); }
+  constexpr real inverse_mass() const noexcept { return body().inverse_mass(); }
+  constexpr bool has_finite_mass() const noexcept { return body().has_finite_mass(); }
+  constexpr void add_force(const Vector3<real>& f) { body().add_force(f); }
+  constexpr P& body() const noexcept { return this->viewed(); }
 };
 
 /// A wide batch seen from `origin`: Bodies whose positions are the batch's relative to the
-/// origin. It refers to the batch (which must outlive it) and copies the origin.
+/// origin.
 template <WideBodies B>
-class RelativeBodies {
+class RelativeBodies : public detail::OriginView<B, typename B::position_value> {
+  using View = detail::OriginView<B, typename B::position_value>;
+
  public:
   using real = typename B::real;
   using position_value = typename B::position_value;
+  using View::View;
 
-  constexpr RelativeBodies(B& bodies, const Vector3<position_value>& origin) noexcept
-      : bodies_(&bodies), origin_(origin) {}
-
-  std::size_t size() const noexcept { return static_cast<std::size_t>(bodies_->size()); }
+  std::size_t size() const noexcept { return static_cast<std::size_t>(bodies().size()); }
   Vector3<real> position(std::size_t i) const {
-    return bodies_->template position_relative_to<real>(i, origin_);
+    return bodies().template position_relative_to<real>(i, this->origin());
   }
-  Vector3<real> velocity(std::size_t i) const { return bodies_->velocity(i); }
-  real inverse_mass(std::size_t i) const { return bodies_->inverse_mass(i); }
-  void add_force(std::size_t i, const Vector3<real>& f) { bodies_->add_force(i, f); }
-
-  constexpr const Vector3<position_value>& origin() const noexcept { return origin_; }
-  constexpr B& bodies() const noexcept { return *bodies_; }
-
- private:
-  B* bodies_;
-  Vector3<position_value> origin_;
+  Vector3<real> velocity(std::size_t i) const { return bodies().velocity(i); }
+  real inverse_mass(std::size_t i) const { return bodies().inverse_mass(i); }
+  void add_force(std::size_t i, const Vector3<real>& f) { bodies().add_force(i, f); }
+  constexpr B& bodies() const noexcept { return this->viewed(); }
 };
 
 /// `body` (a particle with wide positions) as generators see it from `origin`.
