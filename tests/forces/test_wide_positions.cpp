@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <random>
+#include <span>
 #include <vector>
 
 #include <pointmass/forces.hpp>
@@ -49,6 +50,16 @@ bool same_bits(const Vector3<float>& a, const Vector3<float>& b) {
 }
 float largest_difference(const Vector3<float>& a, const Vector3<float>& b) {
   return std::fmax(std::fabs(a.x - b.x), std::fmax(std::fabs(a.y - b.y), std::fabs(a.z - b.z)));
+}
+
+/// The largest magnitude among a vector's components.
+float largest_component(const Vector3<float>& v) {
+  return std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z)));
+}
+/// What the near bodies' own position roundings can add up to over `steps` steps: half the
+/// spacing of floats at the largest coordinate they reached, a step.
+float rounding_budget(float largest, int steps) {
+  return float(steps) * (std::nextafter(largest, 2 * largest + 1) - largest) / 2;
 }
 
 // The anchor, 1e6 m out: a float exactly, so that all-float starts from the same state.
@@ -116,6 +127,7 @@ TEST_CASE_TEMPLATE("relative_to: a spring 1e6 m out moves as the same spring nea
   auto local = forces::relative_to(far, anchor);
   float from_near = 0;
   float float_from_near = 0;
+  float largest = 0;
   for (int n = 0; n < steps; ++n) {
     forces::apply(spring, local, dt);
     forces::apply(spring, near, dt);
@@ -128,6 +140,7 @@ TEST_CASE_TEMPLATE("relative_to: a spring 1e6 m out moves as the same spring nea
     far_float.step(dt);
     for (std::size_t i = 0; i < count; ++i) {
       from_near = std::fmax(from_near, largest_difference(local.position(i), near.position(i)));
+      largest = std::fmax(largest, largest_component(near.position(i)));
       const Vector3<float> q = far_float.position(i);
       const Vector3<float> float_offset{float(double(q.x) - anchor.x),
                                         float(double(q.y) - anchor.y),
@@ -135,14 +148,16 @@ TEST_CASE_TEMPLATE("relative_to: a spring 1e6 m out moves as the same spring nea
       float_from_near = std::fmax(float_from_near, largest_difference(float_offset, near.position(i)));
     }
   }
-  // The near system rounds its positions (|p| < 8 m) by at most half an ulp of 8 m, 4.8e-7 m,
-  // a step; the wide one far less. Over 600 steps of a damped spring that is at most 2.9e-4 m
-  // of difference; rounding each position to float at 1e6 m (1/16 m apart) would be 100 times
-  // that.
+  // The near system rounds its positions by at most half an ulp of its largest coordinate a
+  // step; the wide one far less (1e-10 m at 1e6 m in double). So the two differ by no more
+  // than the near system's rounding budget; rounding each position to float at 1e6 m (1/16 m
+  // apart) would be far beyond it.
+  const float budget = rounding_budget(largest, steps);
   INFO("largest difference from the near system: " << from_near << " m; all-float's: "
-                                                     << float_from_near << " m");
-  CHECK(from_near <= 2.9e-4f);
-  CHECK(float_from_near > 1e-2f);
+                                                     << float_from_near << " m; budget " << budget
+                                                     << " m (largest coordinate " << largest << " m)");
+  CHECK(from_near <= budget);
+  CHECK(float_from_near > 100 * budget);
 }
 
 TEST_CASE_TEMPLATE("relative_to: drag gives all-float's velocities bit for bit, the particle the system's bits", S,
@@ -182,4 +197,57 @@ TEST_CASE_TEMPLATE("relative_to: drag gives all-float's velocities bit for bit, 
   }
   CHECK(velocities_as_float);
   CHECK(particle_as_system);
+}
+
+TEST_CASE_TEMPLATE("relative_to: springs between bodies 1e6 m out move as the same springs near the origin", S,
+                   DoublePositions, CompensatedPositions) {
+  // A chain of links in a system (apply_links), and a Spring each way between two particles.
+  const auto s = starts();
+  std::vector<forces::Link> links;
+  for (std::size_t i = 0; i + 1 < count; ++i) links.push_back({i, i + 1});
+  const forces::LinkSprings<float> chain(15.0f, 1.5f);
+  System<S> far = system_at<S>(far_from);
+  System<float> near = system_at<float>([](const Vector3<float>& p) { return p; });
+  auto local = forces::relative_to(far, anchor);
+
+  pm::Particle<S> a, b;
+  pm::Particle<float> near_a, near_b;
+  a.set_position(far_from(s[0].first));
+  b.set_position(far_from(s[1].first));
+  near_a.set_position(s[0].first);
+  near_b.set_position(s[1].first);
+  auto view_a = forces::relative_to(a, anchor);
+  auto view_b = forces::relative_to(b, anchor);
+  const forces::Spring<forces::RelativeBody<pm::Particle<S>>> a_to_b(view_b, 25.0f, 2.0f);
+  const forces::Spring<forces::RelativeBody<pm::Particle<S>>> b_to_a(view_a, 25.0f, 2.0f);
+  const forces::Spring<pm::Particle<float>> near_a_to_b(near_b, 25.0f, 2.0f);
+  const forces::Spring<pm::Particle<float>> near_b_to_a(near_a, 25.0f, 2.0f);
+
+  float from_near = 0;
+  float largest = 0;
+  for (int n = 0; n < steps; ++n) {
+    forces::apply_links(chain, std::span<const forces::Link>(links), local);
+    forces::apply_links(chain, std::span<const forces::Link>(links), near);
+    far.step(dt);
+    near.step(dt);
+    forces::update_force(a_to_b, view_a, dt);
+    forces::update_force(b_to_a, view_b, dt);
+    forces::update_force(near_a_to_b, near_a, dt);
+    forces::update_force(near_b_to_a, near_b, dt);
+    for (auto* p : {&a, &b}) p->integrate(dt);
+    for (auto* p : {&near_a, &near_b}) p->integrate(dt);
+    for (std::size_t i = 0; i < count; ++i) {
+      from_near = std::fmax(from_near, largest_difference(local.position(i), near.position(i)));
+      largest = std::fmax(largest, largest_component(near.position(i)));
+    }
+    from_near = std::fmax(from_near, largest_difference(view_a.position(), near_a.position()));
+    from_near = std::fmax(from_near, largest_difference(view_b.position(), near_b.position()));
+    largest = std::fmax(largest, std::fmax(largest_component(near_a.position()),
+                                           largest_component(near_b.position())));
+  }
+  // As for the anchored spring: within the near bodies' own rounding budget.
+  const float budget = rounding_budget(largest, steps);
+  INFO("largest difference from the near bodies: " << from_near << " m; budget " << budget
+                                                    << " m (largest coordinate " << largest << " m)");
+  CHECK(from_near <= budget);
 }
