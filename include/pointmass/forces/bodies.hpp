@@ -14,7 +14,6 @@
 #include <concepts>
 #include <cstddef>
 #include <span>
-#include <type_traits>
 
 #include "../real.hpp"
 #include "../vector3.hpp"
