@@ -29,8 +29,8 @@ using DoublePositions = pm::Precision<float, double>;
 using CompensatedPositions = pm::Precision<float, pm::Compensated<float>>;
 
 template <class S>
-using System =
-    pm::ParticleSystem<S, pm::damping::PerSecond, pm::position::Euler, pm::features::ForceAccumulator>;
+using System = pm::ParticleSystem<S, pm::damping::PerSecond, pm::position::Euler,
+                                  pm::features::ForceAccumulator>;
 
 static_assert(forces::WideBodies<System<DoublePositions>> &&
               forces::WideBodies<System<CompensatedPositions>>);
@@ -145,7 +145,8 @@ TEST_CASE_TEMPLATE("relative_to: a spring 1e6 m out moves as the same spring nea
       const Vector3<float> float_offset{float(double(q.x) - anchor.x),
                                         float(double(q.y) - anchor.y),
                                         float(double(q.z) - anchor.z)};
-      float_from_near = std::fmax(float_from_near, largest_difference(float_offset, near.position(i)));
+      float_from_near =
+          std::fmax(float_from_near, largest_difference(float_offset, near.position(i)));
     }
   }
   // The near system rounds its positions by at most half an ulp of its largest coordinate a
@@ -154,8 +155,8 @@ TEST_CASE_TEMPLATE("relative_to: a spring 1e6 m out moves as the same spring nea
   // apart) would be far beyond it.
   const float budget = rounding_budget(largest, steps);
   INFO("largest difference from the near system: " << from_near << " m; all-float's: "
-                                                     << float_from_near << " m; budget " << budget
-                                                     << " m (largest coordinate " << largest << " m)");
+       << float_from_near << " m; budget " << budget << " m (largest coordinate " << largest
+       << " m)");
   CHECK(from_near <= budget);
   CHECK(float_from_near > 100 * budget);
 }
@@ -248,6 +249,6 @@ TEST_CASE_TEMPLATE("relative_to: springs between bodies 1e6 m out move as the sa
   // As for the anchored spring: within the near bodies' own rounding budget.
   const float budget = rounding_budget(largest, steps);
   INFO("largest difference from the near bodies: " << from_near << " m; budget " << budget
-                                                    << " m (largest coordinate " << largest << " m)");
+       << " m (largest coordinate " << largest << " m)");
   CHECK(from_near <= budget);
 }

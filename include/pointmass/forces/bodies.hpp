@@ -210,8 +210,8 @@ constexpr RelativeBody<P> relative_to(P& body,
 }
 /// `bodies` (a batch with wide positions) as generators see them from `origin`.
 template <WideBodies B>
-constexpr RelativeBodies<B> relative_to(B& bodies,
-                                        const Vector3<typename B::position_value>& origin) noexcept {
+constexpr RelativeBodies<B> relative_to(
+    B& bodies, const Vector3<typename B::position_value>& origin) noexcept {
   return RelativeBodies<B>(bodies, origin);
 }
 

@@ -67,7 +67,9 @@ class SystemHandOff : public Base {
       return;
     }
     const typename Base::Arrays a = this->arrays();
-    for (std::size_t i = 0; i < a.size; ++i) buffer[i] = Base::template relative<float>(a, i, origin);
+    for (std::size_t i = 0; i < a.size; ++i) {
+      buffer[i] = Base::template relative<float>(a, i, origin);
+    }
   }
 };
 
