@@ -11,7 +11,6 @@
 
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <optional>
 #include <random>
 #include <stdexcept>
@@ -20,6 +19,8 @@
 
 #include <pointmass/pointmass.hpp>
 #include <pointmass/units.hpp>
+
+#include "ulp.hpp"
 
 namespace pm = pointmass;
 using pm::Vector3;
@@ -84,16 +85,7 @@ double largest(const Vector3<Wide>& v) {
 double float_ulp(double x) {
   return x < 1e-30 ? 1e-45 : std::ldexp(1.0, std::ilogb(x) - 23);
 }
-bool same_bits(float a, float b) {
-  return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
-}
-bool same_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
-template <class T>
-bool same_bits(const Vector3<T>& a, const Vector3<T>& b) {
-  return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
-}
+using pointmass::test::same_bits;
 
 struct Launch {
   Vector3<double> start;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
-// Test support: the distance between two floating-point values in units in the last place.
+// Test support: floating-point values compared by their bits: the same bits, and the distance
+// in units in the last place.
 #pragma once
 
 #include <cstdint>
@@ -7,7 +8,19 @@
 #include <limits>
 #include <type_traits>
 
+#include <pointmass/vector3.hpp>
+
 namespace pointmass::test {
+
+/// The same bits (so NaN == NaN, and +0 != -0).
+template <class R>
+bool same_bits(R a, R b) {
+  return std::memcmp(&a, &b, sizeof(R)) == 0;
+}
+template <class R>
+bool same_bits(const Vector3<R>& a, const Vector3<R>& b) {
+  return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
+}
 
 /// Distance in ulps between two values of R (float or double) of any sign: the difference of
 /// their bit patterns, ordered so that -0 and +0 are 0 apart.

@@ -6,7 +6,6 @@
 #include <doctest/doctest.h>
 
 #include <cstdint>
-#include <cstring>
 #include <random>
 #include <vector>
 
@@ -14,17 +13,9 @@
 #include <pointmass/particle_system.hpp>
 #include <pointmass/vector3.hpp>
 
-namespace pointmass::test {
+#include "ulp.hpp"  // same_bits
 
-/// The same bits (so NaN == NaN, and +0 != -0).
-template <class R>
-bool same_bits(R a, R b) {
-  return std::memcmp(&a, &b, sizeof(R)) == 0;
-}
-template <class R>
-bool same_bits(const Vector3<R>& a, const Vector3<R>& b) {
-  return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
-}
+namespace pointmass::test {
 
 /// A random vector with components in [-scale, scale] (never -0).
 template <class R>
