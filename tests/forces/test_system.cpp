@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // Force generators on the batch: a ParticleSystem with features::ForceAccumulator satisfies the Bodies
-// concept itself, and its arrays can be wrapped in SoaBodies; both give a particle's bits.
+// concept itself, and its arrays can be wrapped in SoaBodies (named, or passed as a temporary);
+// all give a particle's bits.
 #include <doctest/doctest.h>
 
 #include <array>
@@ -54,7 +55,16 @@ TEST_CASE_TEMPLATE("generators on a ParticleSystem match Particle, through apply
                              wrapped.template column<pointmass::Column::force_z>()};
     forces::apply(drag, soa, dt);
     forces::apply(buoyancy, soa, dt);
-    forces::apply(gravity, soa, dt);
+    // A temporary adapter: its forces land in the arrays it refers to.
+    forces::apply(gravity,
+                  forces::SoaBodies<R>{wrapped.position_x(), wrapped.position_y(),
+                                       wrapped.position_z(), wrapped.velocity_x(),
+                                       wrapped.velocity_y(), wrapped.velocity_z(),
+                                       wrapped.template column<pointmass::Column::inverse_mass>(),
+                                       wrapped.template column<pointmass::Column::force_x>(),
+                                       wrapped.template column<pointmass::Column::force_y>(),
+                                       wrapped.template column<pointmass::Column::force_z>()},
+                  dt);
     for (Body& body : bodies) {
       forces::update_force(drag, body, dt);
       forces::update_force(buoyancy, body, dt);

@@ -250,3 +250,40 @@ TEST_CASE_TEMPLATE("relative_to: springs between bodies 1e6 m out move as the sa
        << " m (largest coordinate " << largest << " m)");
   CHECK(from_near <= budget);
 }
+
+TEST_CASE_TEMPLATE("relative_to: a view passed as a temporary adds what a named view adds", S,
+                   DoublePositions, CompensatedPositions) {
+  // `apply(drag, forces::relative_to(debris, camera), t)` in one line: the temporary view's
+  // forces land in the system (and the particle) it refers to, as through a named view.
+  const forces::AnchoredSpring<float> spring({1.0f, 2.0f, -0.5f}, 30.0f, 0.5f);
+  const forces::Drag<float> drag(0.4f, 0.1f);
+  auto named = system_at<S>(far_from);
+  auto temporary = system_at<S>(far_from);
+  auto local = forces::relative_to(named, anchor);
+  forces::apply(spring, local, dt);
+  forces::apply(drag, local, dt);
+  forces::apply(spring, forces::relative_to(temporary, anchor), dt);
+  forces::apply(drag, forces::relative_to(temporary, anchor), dt);
+  const forces::LinkSprings<float> links_spring(12.0f, 1.5f);
+  std::vector<forces::Link> links;
+  for (std::size_t i = 0; i + 1 < count; ++i) links.push_back({i, i + 1});
+  forces::apply_links(links_spring, links, local);
+  forces::apply_links(links_spring, links, forces::relative_to(temporary, anchor));
+  for (std::size_t i = 0; i < count; ++i) {
+    REQUIRE(largest_component(named.force_accumulator(i)) > 0.0f);
+    CHECK(same_bits(temporary.force_accumulator(i), named.force_accumulator(i)));
+  }
+
+  pm::Particle<S> a;
+  pm::Particle<S> b;
+  for (auto* particle : {&a, &b}) {
+    particle->set_position(far_from({3.0f, -1.0f, 2.0f}));
+    particle->set_velocity({1.5f, -2.0f, 0.25f});
+  }
+  forces::AnchoredSpring<float> particle_spring = spring;
+  auto body = forces::relative_to(a, anchor);
+  forces::update_force(particle_spring, body, dt);
+  forces::update_force(particle_spring, forces::relative_to(b, anchor), dt);
+  REQUIRE(largest_component(a.force_accumulator()) > 0.0f);
+  CHECK(same_bits(b.force_accumulator(), a.force_accumulator()));
+}

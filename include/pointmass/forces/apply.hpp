@@ -69,6 +69,34 @@ constexpr void apply(const G& generator, B& bodies, typename B::real duration) {
   for (std::size_t i = 0; i < n; ++i) bodies.add_force(i, force_on(i));
 }
 
+/// A temporary adapter or view (`apply(drag, forces::relative_to(debris, camera), t)`,
+/// `apply(drag, SoaBodies<float>{...}, t)`): the forces land in the storage it refers to.
+template <class G, BodyView B>
+  requires(!std::is_lvalue_reference_v<B>)
+constexpr void update_force(G& generator, B&& body, typename std::remove_cvref_t<B>::real duration) {
+  update_force(generator, body, duration);
+}
+template <class G, BodyView B>
+  requires(!std::is_lvalue_reference_v<B>)
+constexpr void apply(const G& generator, B&& bodies, typename std::remove_cvref_t<B>::real duration) {
+  apply(generator, bodies, duration);
+}
+/// A temporary particle or system would take the force and be gone with it: one sentence.
+template <class G, class B>
+  requires(!std::is_lvalue_reference_v<B> && !BodyView<B>)
+void update_force(G&, B&&, typename std::remove_cvref_t<B>::real) {
+  static_assert(sizeof(B) == 0,
+                "forces::update_force: this body is a temporary, so the force added to it would "
+                "be lost; pass the particle itself (a named object)");
+}
+template <class G, class B>
+  requires(!std::is_lvalue_reference_v<B> && !BodyView<B>)
+void apply(const G&, B&&, typename std::remove_cvref_t<B>::real) {
+  static_assert(sizeof(B) == 0,
+                "forces::apply: these bodies are a temporary, so the forces added to them would "
+                "be lost; pass the system itself (a named object)");
+}
+
 /// A particle or batch with positions stored wider than its arithmetic (Precision<float,
 /// double>, ...) reaches the generators through relative_to(body, origin) (bodies.hpp); passed
 /// as it is, it gets this sentence rather than a list of unmet requirements.

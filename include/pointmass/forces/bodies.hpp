@@ -14,6 +14,7 @@
 #include <concepts>
 #include <cstddef>
 #include <span>
+#include <type_traits>
 
 #include "../real.hpp"
 #include "../vector3.hpp"
@@ -52,11 +53,18 @@ concept Bodies = requires(B& b, const B& cb, std::size_t i) {
   b.add_force(i, Vector3<typename B::real>{});
 };
 
+/// An adapter or view that refers to bodies stored elsewhere (SpanBodies, SoaBodies and
+/// relative_to's views declare `refers_to_bodies`): the forces added through it land in that
+/// storage, so update_force and apply take a temporary one (apply.hpp).
+template <class B>
+concept BodyView = std::remove_cvref_t<B>::refers_to_bodies;
+
 /// Bodies stored as arrays of Vector3s. `inverse_mass` may be empty: then every body has
 /// `uniform_inverse_mass`. Forces are added to `force`.
 template <Real R>
 struct SpanBodies {
   using real = R;
+  static constexpr bool refers_to_bodies = true;
   std::span<const Vector3<R>> positions;
   std::span<const Vector3<R>> velocities;
   std::span<const R> inverse_masses;
@@ -77,6 +85,7 @@ struct SpanBodies {
 template <Real R>
 struct SoaBodies {
   using real = R;
+  static constexpr bool refers_to_bodies = true;
   std::span<const R> px, py, pz;
   std::span<const R> vx, vy, vz;
   std::span<const R> inverse_masses;
@@ -146,6 +155,7 @@ namespace detail {
 template <class T, class Origin>
 class OriginView {
  public:
+  static constexpr bool refers_to_bodies = true;
   constexpr OriginView(T& viewed, const Vector3<Origin>& origin) noexcept
       : viewed_(&viewed), origin_(origin) {}
   constexpr const Vector3<Origin>& origin() const noexcept { return origin_; }

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <span>
+#include <type_traits>
 
 #include "../config.hpp"
 #include "../real.hpp"
@@ -321,6 +322,14 @@ constexpr void apply_links(const BasicLinkSprings<typename B::real, IsBungee>& s
     bodies.add_force(link.first, f);
     bodies.add_force(link.second, -f);
   }
+}
+/// A temporary adapter or view (`forces::relative_to(chain, anchor)`): the forces land in the
+/// storage it refers to.
+template <class B, bool IsBungee>
+  requires(BodyView<B> && !std::is_lvalue_reference_v<B> && Bodies<std::remove_cvref_t<B>>)
+constexpr void apply_links(const BasicLinkSprings<typename std::remove_cvref_t<B>::real, IsBungee>& springs,
+                           std::span<const Link> links, B&& bodies) {
+  apply_links(springs, links, bodies);
 }
 
 }  // namespace pointmass::forces
