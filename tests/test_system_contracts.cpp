@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <span>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <pointmass/pointmass.hpp>
@@ -189,6 +190,84 @@ TEST_CASE_TEMPLATE("a finite mass is accepted only when mass() stays finite", R,
   CHECK(invalid_argument_of([&] { system.set_mass(0, huge); }).find("argument 'mass'") !=
         std::string::npos);
   CHECK(system.inverse_mass(0) == R(1));
+}
+
+TEST_CASE("a removal pass refuses steps and removals from its callback, and outlives a reset") {
+  using Game = ParticleSystem<float, damping::None, position::Euler, features::Lifetime,
+                              features::Handles>;
+  // An expiry callback that steps: refused by step and finish_step, naming the argument; only
+  // the expiring particle goes, and the others are where a plain step leaves them.
+  Game system = three_particles<Game>();
+  system.set_lifetime(1, 0.01f);
+  Game plain = system;
+  plain.step(0.02f);
+  std::string step_message, finish_message;
+  system.step(0.02f, [&](std::size_t) {
+    step_message = invalid_argument_of([&] { system.step(0.25f); });
+    finish_message = invalid_argument_of([&] { system.finish_step(); });
+  });
+  CHECK(step_message.find("step: argument 'duration' = 0.25 must be not stepped during an "
+                          "expiry callback") != std::string::npos);
+  CHECK(finish_message.find("finish_step: argument 'particles' = 3 must be not stepped during "
+                            "an expiry callback") != std::string::npos);
+  CHECK(same_particles(system, plain));
+
+  // kill_if's predicate: removing or stepping is refused; it removes what it returns true for
+  // and nothing else, and every handle still finds its own particle.
+  Game culled = three_particles<Game>();
+  const Game::Handle first = culled.handle(0);
+  const Game::Handle last = culled.handle(2);
+  std::string kill_message, clear_message, step_in_predicate;
+  const std::size_t removed = culled.kill_if([&](std::size_t i) {
+    if (i == 0) {
+      kill_message = invalid_argument_of([&] { culled.kill(2); });
+      clear_message = invalid_argument_of([&] { culled.clear(); });
+      step_in_predicate = invalid_argument_of([&] { culled.step(0.5f); });
+    }
+    return culled.position(i).x == 1.0f;
+  });
+  CHECK(kill_message.find("kill: argument 'index' = 2 must be not removed during kill_if's "
+                          "predicate") != std::string::npos);
+  CHECK(clear_message.find("clear") != std::string::npos);
+  CHECK(step_in_predicate.find("step: argument 'duration' = 0.5 must be not stepped during "
+                               "kill_if's predicate") != std::string::npos);
+  CHECK(removed == 1);
+  REQUIRE(culled.size() == 2);
+  REQUIRE(culled.find(first).has_value());
+  REQUIRE(culled.find(last).has_value());
+  CHECK(culled.position(*culled.find(first)).x == 0.0f);
+  CHECK(culled.position(*culled.find(last)).x == 2.0f);
+  CHECK(culled.position(*culled.find(last)).y == 0.0f);  // not stepped (its velocity is 2 m/s)
+
+  // A callback or predicate that replaces the whole system (assignment: not a removal the
+  // pass can refuse) leaves it as assigned, with nothing removed out of range.
+  Game reset = three_particles<Game>();
+  reset.set_lifetime(2, 0.01f);
+  reset.step(0.02f, [&](std::size_t) { reset = Game(); });
+  CHECK(reset.empty());
+  Game emptied = three_particles<Game>();
+  CHECK(emptied.kill_if([&](std::size_t) {
+    emptied = Game();
+    return true;
+  }) == 0);
+  CHECK(emptied.empty());
+}
+
+TEST_CASE("spawn_burst names the count it refuses") {
+  Sparks system = three_particles<Sparks>();
+  const std::size_t count = std::numeric_limits<std::size_t>::max();
+  std::string message;
+  try {
+    (void)system.spawn_burst(count, [](std::size_t) {
+      return std::tuple{Vector3<float>{}, Vector3<float>{}};
+    });
+  } catch (const std::length_error& error) {
+    message = error.what();
+  }
+  CHECK(message.find("spawn_burst: argument 'count' = " + std::to_string(count) +
+                     " must be <= max_size() - size() = " +
+                     std::to_string(system.max_size() - 3)) != std::string::npos);
+  CHECK(system.size() == 3);
 }
 
 TEST_CASE("the game features' arguments: removals in an expiry callback, buffers, strides, alpha") {

@@ -322,12 +322,13 @@ struct SystemLayout {
     }
   }
   /// True for the columns that hold parts of a damping state that must agree with each
-  /// other (d, ln d and d^t): ParticleSystem::column gives them read-only.
+  /// other (d, ln d and the d^t kept for the last step length): ParticleSystem::column gives
+  /// them read-only (set_damping writes them together).
   template <Column C>
-  static constexpr bool read_only = C == Column::damping_retention ||
-                                    (log_damping_state && (C == Column::damping ||
-                                                           C == Column::damping_log_hi ||
-                                                           C == Column::damping_log_lo));
+  static constexpr bool read_only =
+      C == Column::damping_retention ||
+      ((log_damping_state || per_particle_retention) && C == Column::damping) ||
+      (log_damping_state && (C == Column::damping_log_hi || C == Column::damping_log_lo));
   /// The element type of user column I.
   template <std::size_t I>
   using user_element_t = typename std::tuple_element_t<I, user_columns>::type;

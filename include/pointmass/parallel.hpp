@@ -127,12 +127,12 @@ void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system
 
 /// As step(policy, system, duration), calling on_expire(i) for each particle whose lifetime is
 /// over, on the calling thread, before its removal (ParticleSystem::step(t, on_expire)).
-template <class ExecutionPolicy, Real R, class D, class P, class... Features, class OnExpire>
+template <class ExecutionPolicy, class S, class D, class P, class... Features, class OnExpire>
   requires(std::is_execution_policy_v<std::remove_cvref_t<ExecutionPolicy>> &&
-           ParticleSystem<R, D, P, Features...>::has_lifetime &&
+           ParticleSystem<S, D, P, Features...>::has_lifetime &&
            std::is_invocable_v<OnExpire&, std::size_t>)
-void step(ExecutionPolicy&& policy, ParticleSystem<R, D, P, Features...>& system, R duration,
-          OnExpire&& on_expire) {
+void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system,
+          typename ParticleSystem<S, D, P, Features...>::real duration, OnExpire&& on_expire) {
   if (detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration)) {
     detail::SystemAccess::finish_step(system, duration, on_expire);
   }

@@ -87,7 +87,7 @@ class ParticleSystem
   using Kernel = typename State::Kernel;
   using State::acceleration_;
   using State::damping_;
-  using State::expiring_;
+  using State::removing_;
   using State::load;
   using State::store;
   using State::valid_index;
@@ -162,7 +162,7 @@ class ParticleSystem
   void reserve(std::size_t capacity) { State::reserve_checked(capacity); }
   /// Removes every particle; keeps the capacity. (Not inside an expiry callback.)
   void clear() {
-    if (detail::check_not_expiring("clear", expiring_, 0)) State::remove_all();
+    if (detail::check_not_removing("clear", removing_, 0)) State::remove_all();
   }
 
   // --- uniform values ------------------------------------------------------------------------
@@ -256,17 +256,18 @@ class ParticleSystem
 
   /// Removes particle `index` by moving the last particle into its place (order not kept).
   void kill(std::size_t index) {
-    if (detail::check_not_expiring("kill", expiring_, index) &&
+    if (detail::check_not_removing("kill", removing_, index) &&
         detail::check_index("kill", index, size())) {
       State::remove(index);
     }
   }
   /// Removes every particle for which predicate(index) is true, by swap-remove, and returns
   /// how many. The predicate sees each particle once; after a removal it is asked about the
-  /// particle moved into the freed index.
+  /// particle moved into the freed index. Spawning inside the predicate is allowed (the new
+  /// particles are asked about too); removing (kill, kill_if, clear) or stepping is refused.
   template <class Predicate>
   std::size_t kill_if(Predicate&& predicate) {
-    if (!detail::check_not_expiring("kill_if", expiring_, 0)) return 0;
+    if (!detail::check_not_removing("kill_if", removing_, 0)) return 0;
     return State::remove_if(predicate);
   }
 
@@ -349,7 +350,8 @@ class ParticleSystem
   /// As step(duration), calling on_expire(i) for each particle whose lifetime is over, once,
   /// after the step and before its removal, so that particle i still holds its final state.
   /// Spawning inside the callback is allowed and immediate (the new particles are stepped
-  /// from the next step on); removing particles (kill, kill_if, clear) is refused.
+  /// from the next step on); removing particles (kill, kill_if, clear) or stepping (step,
+  /// finish_step) is refused.
   template <class OnExpire>
     requires(has_lifetime && std::is_invocable_v<OnExpire&, std::size_t>)
   void step(R duration, OnExpire&& on_expire) {
@@ -382,14 +384,14 @@ class ParticleSystem
   void finish_step() {
     arrays_changed();
     typename State::NoCallback none;
-    State::expire(none);
+    State::expire(none, "finish_step");
   }
   /// finish_step calling on_expire(i) for each expiring particle before its removal.
   template <class OnExpire>
     requires(has_lifetime && std::is_invocable_v<OnExpire&, std::size_t>)
   void finish_step(OnExpire&& on_expire) {
     arrays_changed();
-    State::expire(on_expire);
+    State::expire(on_expire, "finish_step");
   }
   /// True when a particle of this `age` and `lifetime` has expired: its age reached a finite
   /// lifetime (an infinite one never expires, even when the age itself overflows).

@@ -306,6 +306,12 @@ TEST_CASE_TEMPLATE("per-particle damping states live in columns of R that move t
       std::is_same_v<decltype(std::declval<FrameDamped&>().template column<Column::damping>()),
                      std::span<R>>);
   static_assert(!FrameDamped::template stores<Column::damping_log_hi>);
+  // AccelerateThenDamp keeps d^t for the last step length beside d: its d is read-only too
+  // (a write through the column would leave the kept d^t stale); set_damping refreshes both.
+  using ListingDamped = ParticleSystem<R, damping::AccelerateThenDamp, position::Euler,
+                                       features::PerParticleDamping>;
+  CHECK(std::is_same_v<decltype(std::declval<ListingDamped&>().template column<Column::damping>()),
+                       std::span<const R>>);
 
   Damped system(8);
   const R values[] = {R(0.25), R(0.5), R(0.99), R(0)};

@@ -32,12 +32,23 @@ TEST_CASE_TEMPLATE("a parallel step equals the serial step", S, float, double,
     serial.set_lifetime(i, R(0.01) * static_cast<R>(i % 50 + 1));
   }
   System parallel = serial;
+  // Every other step with an expiry callback: it takes every system step takes.
+  std::size_t serial_expired = 0;
+  std::size_t parallel_expired = 0;
   for (int step = 0; step < 8; ++step) {
-    serial.step(R(1) / R(30));
-    pointmass::step(std::execution::par_unseq, parallel, R(1) / R(30));
+    if (step % 2 == 0) {
+      serial.step(R(1) / R(30));
+      pointmass::step(std::execution::par_unseq, parallel, R(1) / R(30));
+    } else {
+      serial.step(R(1) / R(30), [&](std::size_t) { ++serial_expired; });
+      pointmass::step(std::execution::par_unseq, parallel, R(1) / R(30),
+                      [&](std::size_t) { ++parallel_expired; });
+    }
   }
   REQUIRE(serial.size() == parallel.size());
   CHECK(serial.size() < count);  // lifetimes expired some
+  CHECK(serial_expired > 0);
+  CHECK(parallel_expired == serial_expired);
   bool same = true;
   for (std::size_t i = 0; i < serial.size(); ++i) {
     same = same && same_bits(serial.position(i), parallel.position(i)) &&

@@ -3,7 +3,7 @@
 // its public API.
 //
 // Owns: the system's data (the block of arrays, the uniform damping and acceleration, the
-// handle table, the walk direction and the expiry flag), its copy, move and swap; capacity
+// handle table, the walk direction and the removal pass under way), its copy, move and swap; capacity
 // and growth; appending and swap-removing a particle (with its handle); reading and writing
 // a particle's position in the configuration's precision (precision.hpp), and its previous
 // position (features::Interpolation); the user columns at spawn; the walk of a step and the
@@ -105,7 +105,7 @@ class SystemState {
 
   Block block_;
   bool backward_ = false;  // the next step walks backwards (see Kernel::alternates)
-  bool expiring_ = false;  // inside an expiry callback (removals are refused)
+  RemovalPass removing_ = RemovalPass::none;  // inside a pass that removes particles
   [[no_unique_address]] damping_state damping_{};
   Vector3<R> acceleration_{};
   [[no_unique_address]] Table handles_{};
@@ -126,21 +126,31 @@ class SystemState {
       return Block::max_capacity;
     }
   }
-  [[noreturn]] static void throw_length_error(const char* function, std::size_t capacity) {
+  // `argument` = value must be `requirement` ("<= max_size()"), whose bound is `limit`.
+  [[noreturn]] static void throw_length_error(const char* function, const char* argument,
+                                              std::size_t value, const char* requirement,
+                                              std::size_t limit) {
 #if POINTMASS_HAS_EXCEPTIONS
-    throw std::length_error(std::string("pointmass: ") + function + ": argument 'capacity' = " +
-                            std::to_string(capacity) + " must be <= max_size() = " +
-                            std::to_string(max_size()));
+    throw std::length_error(std::string("pointmass: ") + function + ": argument '" + argument +
+                            "' = " + std::to_string(value) + " must be " + requirement + " = " +
+                            std::to_string(limit));
 #else
-    report_scalar(function, "capacity", "<= max_size()", capacity);
+    static_cast<void>(limit);
+    report_scalar(function, argument, requirement, value);
     std::abort();
 #endif
   }
+  [[noreturn]] static void throw_length_error(const char* function, std::size_t capacity) {
+    throw_length_error(function, "capacity", capacity, "<= max_size()", max_size());
+  }
+  // All or nothing: the new block is allocated before the handle table grows, so a failed
+  // allocation of either leaves the system as it was.
   void reserve_checked(std::size_t capacity) {
     if (capacity <= this->capacity()) return;
     if (capacity > max_size()) throw_length_error("reserve", capacity);
+    Block grown = block_.with_capacity(capacity);
     if constexpr (has_handles) handles_.reserve(capacity);
-    block_ = block_.with_capacity(capacity);
+    block_ = std::move(grown);
   }
   // Full: doubles the capacity (at least 16), up to max_size().
   void grow() {
@@ -152,7 +162,10 @@ class SystemState {
   }
   // Room for `count` more particles at once (a burst): at least doubling, as grow() would.
   void make_room(std::size_t count) {
-    if (count > max_size() - size()) throw_length_error("spawn_burst", size() + count);
+    if (count > max_size() - size()) {
+      throw_length_error("spawn_burst", "count", count, "<= max_size() - size()",
+                         max_size() - size());
+    }
     if (size() + count > capacity()) {
       reserve_checked(std::max(size() + count, std::min(2 * capacity(), max_size())));
     }
@@ -256,18 +269,27 @@ class SystemState {
     }
     set_size(0);
   }
+  // kill_if: the predicate runs inside RemovalPass::predicate, where removals and steps are
+  // refused; should it have changed the particles some other way (assigned or swapped the
+  // system), a particle is removed only if its index is still live.
   template <class Predicate>
   std::size_t remove_if(Predicate& predicate) {
-    const std::size_t before = size();
+    std::size_t removed = 0;
     std::size_t i = 0;
     while (i < size()) {
-      if (predicate(i)) {
+      bool remove_it = false;
+      {
+        const PassScope scope(removing_, RemovalPass::predicate);
+        remove_it = predicate(std::as_const(i));
+      }
+      if (remove_it && i < size()) {
         remove(i);
+        ++removed;
       } else {
         ++i;
       }
     }
-    return before - size();
+    return removed;
   }
 
   // --- values by index -----------------------------------------------------------------------
@@ -358,6 +380,7 @@ class SystemState {
 #if POINTMASS_HOST_CHECKS
     if (!check_duration("step", duration)) return false;
 #endif
+    if (!check_not_stepping("step", "duration", removing_, duration)) return false;
     return !real_equal(duration, R(0)) && size() != 0;
   }
   // The damping_retention column may no longer hold d^t for retention_duration_ (written
@@ -385,13 +408,17 @@ class SystemState {
   struct NoCallback {
     void operator()(std::size_t) const noexcept {}
   };
-  // Marks the system as inside an expiry callback while it lives.
-  struct ExpiringScope {
-    bool& flag;
-    explicit ExpiringScope(bool& expiring) noexcept : flag(expiring) { flag = true; }
-    ExpiringScope(const ExpiringScope&) = delete;
-    ExpiringScope& operator=(const ExpiringScope&) = delete;
-    ~ExpiringScope() { flag = false; }
+  // Marks the system as inside a removal pass (an expiry callback, kill_if's predicate) while
+  // it lives.
+  struct PassScope {
+    RemovalPass& flag;
+    RemovalPass outer;
+    PassScope(RemovalPass& pass, RemovalPass inner) noexcept : flag(pass), outer(pass) {
+      flag = inner;
+    }
+    PassScope(const PassScope&) = delete;
+    PassScope& operator=(const PassScope&) = delete;
+    ~PassScope() { flag = outer; }
   };
   POINTMASS_HD static constexpr bool expired(R age, R lifetime) noexcept {
     return (age >= lifetime) & (lifetime < real_infinity<R>);
@@ -400,8 +427,10 @@ class SystemState {
   // particles none of which has expired (a test that vectorises) is skipped whole; only a
   // block with an expiry is walked one particle at a time.
   template <class OnExpire>
-  void expire(OnExpire& on_expire) {
+  void expire(OnExpire& on_expire, const char* function = "step") {
     if constexpr (Layout::has_lifetime) {
+      // (step refuses earlier, in begin_step; finish_step reaches here)
+      if (!check_not_stepping(function, "particles", removing_, size())) return;
       constexpr std::size_t block = Kernel::vector_block;
       std::size_t i = 0;
       while (i < size()) {
@@ -419,8 +448,13 @@ class SystemState {
         }
         if (expired(age[i], lifetime[i])) {
           if constexpr (!std::is_same_v<std::remove_cvref_t<OnExpire>, NoCallback>) {
-            const ExpiringScope scope(expiring_);
-            on_expire(std::as_const(i));
+            {
+              const PassScope scope(removing_, RemovalPass::expiry);
+              on_expire(std::as_const(i));
+            }
+            // The callback may only spawn; should it have changed the particles some other
+            // way (assigned or swapped the system), only a live, expired particle goes.
+            if (!(i < size() && expired(arrays().age[i], arrays().lifetime[i]))) continue;
           }
           remove(i);
         } else {

@@ -202,13 +202,34 @@ constexpr bool check_strided_buffer(const char* function, std::size_t available,
   return false;
 }
 
-/// Not inside an expiry callback, where removing particles is not allowed (the step is
-/// removing them); `index` is the particle the call would have removed.
-constexpr bool check_not_expiring(const char* function, bool expiring, std::size_t index) {
-  if (!expiring) return true;
+/// A pass of a system that removes particles and calls the caller's code for each: an expiry
+/// callback (step with on_expire), kill_if's predicate. Inside one, the calls that remove or
+/// step particles are refused (the pass is walking the indices); spawning is allowed.
+enum class RemovalPass : unsigned char { none, expiry, predicate };
+
+/// Not inside a removal pass, for a call that removes particles; `index` is the particle the
+/// call would have removed.
+constexpr bool check_not_removing(const char* function, RemovalPass pass, std::size_t index) {
+  if (pass == RemovalPass::none) return true;
   report_scalar(function, "index",
-                "not removed during an expiry callback (spawn there; kill after the step)",
+                pass == RemovalPass::expiry
+                    ? "not removed during an expiry callback (spawn there; kill after the step)"
+                    : "not removed during kill_if's predicate (return true to remove the "
+                      "particle it is asked about)",
                 index);
+  return false;
+}
+/// Not inside a removal pass, for a call that steps (or expires) particles; `argument` and
+/// `value` are the call's (step's duration, finish_step's particle count).
+template <class T>
+constexpr bool check_not_stepping(const char* function, const char* argument, RemovalPass pass,
+                                  T value) {
+  if (pass == RemovalPass::none) return true;
+  report_scalar(function, argument,
+                pass == RemovalPass::expiry
+                    ? "not stepped during an expiry callback (step after the step returns)"
+                    : "not stepped during kill_if's predicate (step after kill_if returns)",
+                value);
   return false;
 }
 
