@@ -348,17 +348,19 @@ TEST_CASE("FixedStep and the trajectory queries report bad arguments and keep th
         std::string::npos);
   CHECK(invalid_argument_of([&] { clock.set_max_steps(0); })
             .find("set_max_steps: argument 'max_steps' = 0 must be >= 1") != std::string::npos);
+  CHECK(invalid_argument_of([&] { clock.set_max_steps(-5); })
+            .find("set_max_steps: argument 'max_steps' = -5 must be >= 1") != std::string::npos);
   CHECK(clock.step() == 1.0 / 64);
   CHECK(clock.max_steps() == 4);
   (void)clock.advance(1.0 / 128);
   CHECK(invalid_argument_of([&] { (void)clock.advance(-1.0); })
-            .find("advance: argument 'duration' = -1") != std::string::npos);
+            .find("advance: argument 'frame_time' = -1") != std::string::npos);
   CHECK(clock.accumulated() == 1.0 / 128);
 
   Particle<double, damping::Exact, position::Exact> shell;
   shell.set_velocity({0, 10, 0});
   CHECK(invalid_argument_of([&] { (void)state_at(shell, -1.0); })
-            .find("state_at: argument 'duration' = -1") != std::string::npos);
+            .find("state_at: argument 'time' = -1") != std::string::npos);
   CHECK(invalid_argument_of([&] {
           (void)time_to_reach(shell, Axis::y, std::numeric_limits<double>::infinity());
         }).find("time_to_reach: argument 'value'") != std::string::npos);

@@ -74,9 +74,7 @@ class FixedStep {
     }
   }
   void set_max_steps(int max_steps) {
-    if (detail::check_at_least("set_max_steps", "max_steps",
-                               max_steps < 0 ? std::size_t{0} : static_cast<std::size_t>(max_steps),
-                               1)) {
+    if (detail::check_at_least("set_max_steps", "max_steps", max_steps, 1)) {
       max_steps_ = max_steps;
     }
   }
@@ -88,7 +86,7 @@ class FixedStep {
   /// reported and adds nothing.
   Frame advance(R frame_time) {
     Frame frame;
-    if (!detail::check_duration("advance", frame_time)) {
+    if (!detail::check_duration("advance", "frame_time", frame_time)) {
       frame.alpha = accumulated_ / step_;
       return frame;
     }

@@ -109,7 +109,9 @@ R bisect(const Flight& flight, R value, R lo, R hi) noexcept {
 template <Real R, class D>
   requires detail::trajectory_damping_v<D>
 TrajectoryState<R> state_at(const Particle<R, D, position::Exact>& particle, R time) {
-  if (!detail::check_duration("state_at", time)) return {particle.position(), particle.velocity()};
+  if (!detail::check_duration("state_at", "time", time)) {
+    return {particle.position(), particle.velocity()};
+  }
   typename D::template State<R> state{};
   if constexpr (std::is_same_v<D, damping::Exact>) state = typename D::template State<R>(particle.damping());
   Vector3<R> p = particle.position();

@@ -14,8 +14,10 @@
 // header that validates).
 #pragma once
 
+#include <concepts>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 
 #include "../config.hpp"
 #include "../real.hpp"
@@ -73,12 +75,18 @@ constexpr bool check_inverse_mass(const char* function, R inverse_mass) {
   return false;
 }
 
-/// A step's duration: finite and >= 0.
+/// A span of time named `argument` (a step's duration, a frame's time): finite and >= 0.
+template <Real R>
+constexpr bool check_duration(const char* function, const char* argument, R value) {
+  if (real_isfinite(value) && value >= R(0)) return true;
+  report_scalar(function, argument, "finite and >= 0", value);
+  return false;
+}
+
+/// A step's duration, the argument `duration`: finite and >= 0.
 template <Real R>
 constexpr bool check_duration(const char* function, R duration) {
-  if (real_isfinite(duration) && duration >= R(0)) return true;
-  report_scalar(function, "duration", "finite and >= 0", duration);
-  return false;
+  return check_duration(function, "duration", duration);
 }
 
 /// A lifetime in seconds: > 0 (infinity: for ever).
@@ -182,9 +190,11 @@ constexpr bool check_fraction(const char* function, const char* argument, R valu
   return false;
 }
 
-/// A count of at least `least` (a stride of 3 numbers, a cap of 1 step).
-constexpr bool check_at_least(const char* function, const char* argument, std::size_t value,
-                              std::size_t least) {
+/// A count of at least `least` (a stride of 3 numbers, a cap of 1 step), reported as given
+/// (a negative int stays negative in the report).
+template <std::integral I>
+constexpr bool check_at_least(const char* function, const char* argument, I value,
+                              std::type_identity_t<I> least) {
   if (value >= least) return true;
   report_scalar(function, argument,
                 least == 1 ? ">= 1" : least == 3 ? ">= 3 (x, y and z)" : ">= the least allowed",
