@@ -2,14 +2,21 @@
 // Real: the concept, and maths functions that stay in the precision they are given.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 #include <pointmass/damping.hpp>
 #include <pointmass/real.hpp>
+#include <pointmass/vector3.hpp>
+
+#include "ulp.hpp"
 
 using pointmass::Real;
+using pointmass::test::same_bits;
 
 static_assert(Real<float> && Real<double> && Real<long double>);
 static_assert(!Real<int> && !Real<float&> && !Real<const double> && !Real<char>);
@@ -40,7 +47,84 @@ bool correctly_rounded_pow(float b, float e, float& result) {
   return from_long_double == from_double;
 }
 
+/// Inputs for the square root: bit patterns of positive finite R, every exponent (subnormals
+/// too) with scrambled significands, then each near a perfect square (k^2 and its neighbours,
+/// where a root that is one ulp off shows first).
+constexpr int sqrt_chunk = 256;
+template <class R>
+constexpr R sqrt_input(int index) {
+  using Bits = std::conditional_t<sizeof(R) == 4, std::uint32_t, std::uint64_t>;
+  constexpr int digits = std::numeric_limits<R>::digits;
+  constexpr int exponents = 2 * std::numeric_limits<R>::max_exponent - 1;  // 255 or 2047
+  std::uint64_t h = 0x9e3779b97f4a7c15u * static_cast<std::uint64_t>(index + 1);
+  h ^= h >> 29;
+  h *= 0xbf58476d1ce4e5b9u;
+  h ^= h >> 32;
+  if (index % 3 == 2) {  // a square of an integer, or one of its neighbours
+    const auto k = static_cast<R>(h % (std::uint64_t{1} << (digits / 2)) + 1);
+    const Bits square = __builtin_bit_cast(Bits, k * k);
+    return __builtin_bit_cast(R, static_cast<Bits>(square + (h >> 40) % 3 - 1));
+  }
+  const std::uint64_t exponent = static_cast<std::uint64_t>(index) % exponents;
+  const std::uint64_t significand = h & ((std::uint64_t{1} << (digits - 1)) - 1);
+  const std::uint64_t bits = (exponent << (digits - 1)) | significand;
+  return bits == 0 ? std::numeric_limits<R>::denorm_min() : __builtin_bit_cast(R, Bits(bits));
+}
+template <class R, int Chunk>
+constexpr std::array<R, sqrt_chunk> constant_roots() {
+  std::array<R, sqrt_chunk> roots{};
+  for (int i = 0; i < sqrt_chunk; ++i) {
+    const R x = sqrt_input<R>(Chunk * sqrt_chunk + i);
+    roots[static_cast<std::size_t>(i)] = pointmass::real_sqrt(x);
+  }
+  return roots;
+}
+/// How many of chunk Chunk's roots, computed in a constant expression, differ from std::sqrt's
+/// (IEEE: correctly rounded) at run time.
+template <class R, int Chunk>
+int constant_roots_off() {
+  static constexpr std::array<R, sqrt_chunk> roots = constant_roots<R, Chunk>();
+  int off = 0;
+  for (int i = 0; i < sqrt_chunk; ++i) {
+    volatile R x = sqrt_input<R>(Chunk * sqrt_chunk + i);
+    if (!same_bits(roots[static_cast<std::size_t>(i)], std::sqrt(static_cast<R>(x)))) {
+      if (off == 0) MESSAGE("first input whose roots differ: ", static_cast<R>(x));
+      ++off;
+    }
+  }
+  return off;
+}
+template <class R, int... Chunks>
+int constant_roots_off(std::integer_sequence<int, Chunks...>) {
+  return (constant_roots_off<R, Chunks>() + ...);
+}
+
 }  // namespace
+
+TEST_CASE_TEMPLATE("real_sqrt in a constant expression is correctly rounded, as at run time", R,
+                   float, double) {
+  // 12 chunks of 256 (each its own constant expression, within clang's step limit).
+  CHECK(constant_roots_off<R>(std::make_integer_sequence<int, 12>{}) == 0);
+  constexpr R edges[] = {std::numeric_limits<R>::denorm_min(), std::numeric_limits<R>::min(),
+                         std::numeric_limits<R>::max(), R(1), R(2), R(0.5)};
+  constexpr R edge_roots[] = {pointmass::real_sqrt(edges[0]), pointmass::real_sqrt(edges[1]),
+                              pointmass::real_sqrt(edges[2]), pointmass::real_sqrt(edges[3]),
+                              pointmass::real_sqrt(edges[4]), pointmass::real_sqrt(edges[5])};
+  for (int i = 0; i < 6; ++i) {
+    volatile R x = edges[i];
+    CHECK(same_bits(edge_roots[i], std::sqrt(static_cast<R>(x))));
+  }
+  // magnitude and normalized through it: 1 + 4 + 72.25, whose root Newton's iteration got
+  // one ulp high.
+  constexpr pointmass::Vector3<R> v{1, 2, R(8.5)};
+  constexpr R length = pointmass::magnitude(v);
+  constexpr pointmass::Vector3<R> unit = pointmass::normalized(v);
+  volatile R z = R(8.5);
+  const pointmass::Vector3<R> w{1, 2, static_cast<R>(z)};
+  CHECK(same_bits(length, std::sqrt(R(77.25))));
+  CHECK(same_bits(length, pointmass::magnitude(w)));
+  CHECK(same_bits(unit, pointmass::normalized(w)));
+}
 
 TEST_CASE("real_pow of floats is powf, not pow on promoted doubles") {
   // pow on doubles rounded to float is the correctly rounded result almost always; powf (glibc:

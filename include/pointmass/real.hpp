@@ -121,16 +121,85 @@ POINTMASS_HD inline R real_pow(R base, R exponent) noexcept {
   else return ::powl(base, exponent);
 }
 
-/// Square root in R; usable in constant expressions (Newton's iteration there).
+namespace detail {
+
+/// sqrt(x) correctly rounded (to nearest) for a finite x > 0, float or double, in integer
+/// arithmetic that a constant expression can evaluate: x = m 2^e with e even, the integer
+/// square root of m 4^s taken bit by bit with its remainder (the sticky bit), and the root
+/// rounded once to R's digits. A square root is never halfway between two Reals, so the
+/// result is IEEE's sqrt bit for bit.
+template <Real R>
+POINTMASS_HD constexpr R exact_sqrt(R x) noexcept {
+  using Bits = typename FloatBits<R>::type;
+  constexpr int digits = std::numeric_limits<R>::digits;  // 24 or 53, the implicit bit too
+  constexpr int bias = std::numeric_limits<R>::max_exponent - 1;
+  constexpr std::uint64_t implicit = std::uint64_t{1} << (digits - 1);
+  const auto bits = static_cast<std::uint64_t>(__builtin_bit_cast(Bits, x));
+  std::uint64_t m = bits & (implicit - 1);
+  const int biased = static_cast<int>(bits >> (digits - 1));
+  int e = 0;  // x = m 2^e
+  if (biased == 0) {  // subnormal: normalise
+    e = 1 - bias - (digits - 1);
+    while ((m & implicit) == 0) {
+      m <<= 1;
+      --e;
+    }
+  } else {
+    m |= implicit;
+    e = biased - bias - (digits - 1);
+  }
+  if ((e & 1) != 0) {  // e even: sqrt(m 2^e) = sqrt(m) 2^(e/2); m < 2^(digits + 1)
+    m <<= 1;
+    --e;
+  }
+  // root = floor(sqrt(m 4^s)) >= 2^(digits + 1): two bits beyond R's for the rounding.
+  constexpr int s = (digits + 4) / 2;
+  std::uint64_t root = 0;
+  std::uint64_t remainder = 0;
+  for (int pair = (digits + 1) / 2 + s; pair >= 0; --pair) {  // m 4^s, two bits at a time
+    const int shift = 2 * (pair - s);
+    const std::uint64_t next = shift >= 0 ? (m >> shift) & 3u : 0u;
+    remainder = (remainder << 2) | next;
+    root <<= 1;
+    const std::uint64_t trial = (root << 1) | 1u;
+    if (remainder >= trial) {
+      remainder -= trial;
+      root |= 1u;
+    }
+  }
+  int extra = 0;  // bits of root beyond R's digits
+  while ((root >> (digits + extra)) != 0) ++extra;
+  const std::uint64_t guard = (root >> (extra - 1)) & 1u;
+  const bool sticky = remainder != 0 || (root & ((std::uint64_t{1} << (extra - 1)) - 1)) != 0;
+  std::uint64_t mantissa = root >> extra;
+  if (guard != 0 && (sticky || (mantissa & 1u) != 0)) ++mantissa;
+  if (mantissa >> digits != 0) {  // rounded up to the next power of two
+    mantissa >>= 1;
+    ++extra;
+  }
+  const int exponent = e / 2 - s + extra + (digits - 1) + bias;  // always normal
+  return __builtin_bit_cast(
+      R, static_cast<Bits>((static_cast<std::uint64_t>(exponent) << (digits - 1)) |
+                           (mantissa & (implicit - 1))));
+}
+
+}  // namespace detail
+
+/// Square root in R; usable in constant expressions, where float and double take
+/// detail::exact_sqrt (correctly rounded, as at run time) and long double Newton's iteration.
 template <Real R>
 POINTMASS_HD constexpr R real_sqrt(R x) noexcept {
   if (std::is_constant_evaluated()) {
     if (!(x > R(0)) || !real_isfinite(x)) return real_equal(x, R(0)) || x > R(0) ? x : R(0) / R(0);
-    R root = x > R(1) ? x : R(1);
-    for (;;) {
-      const R next = (root + x / root) / R(2);
-      if (!(next < root)) return root;
-      root = next;
+    if constexpr (detail::has_ieee_bits_v<R>) {
+      return detail::exact_sqrt(x);
+    } else {
+      R root = x > R(1) ? x : R(1);
+      for (;;) {
+        const R next = (root + x / root) / R(2);
+        if (!(next < root)) return root;
+        root = next;
+      }
     }
   }
   if constexpr (std::same_as<R, float>) return ::sqrtf(x);
