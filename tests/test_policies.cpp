@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <string>
 
 #include <pointmass/pointmass.hpp>
@@ -87,35 +88,70 @@ TEST_CASE_TEMPLATE_DEFINE("many steps match a loop of the exact discrete equatio
 TEST_CASE_TEMPLATE_APPLY(many_steps_id, test::AllCombinations);
 
 // The phi series' length follows the significand, not the size of the type: a 64-bit
-// x87 long double and a 113-bit quad one have the same size but need 14 and 22 terms.
-static_assert(detail::phi_terms_for(std::numeric_limits<float>::digits) == 7);
-static_assert(detail::phi_terms_for(std::numeric_limits<double>::digits) == 12);
-static_assert(detail::phi_terms_for(64) == 14 && detail::phi_terms_for(113) == 22);
-static_assert(detail::phi_terms<long double> == detail::phi_terms_for(std::numeric_limits<long double>::digits));
+// x87 long double and a 113-bit quad one have the same size but need 21 and 31 terms.
+static_assert(detail::phi_terms_for(std::numeric_limits<float>::digits) == 11);
+static_assert(detail::phi_terms_for(std::numeric_limits<double>::digits) == 18);
+static_assert(detail::phi_terms_for(64) == 21 && detail::phi_terms_for(113) == 31);
+static_assert(detail::phi_terms<long double> ==
+              detail::phi_terms_for(std::numeric_limits<long double>::digits));
 
-TEST_CASE_TEMPLATE("the phi series reach their type's precision on |x| < 1/4", R, float, double,
+namespace {
+
+/// phi_offset(x) = sum_{n>=0} x^n / (n + offset)!, summed in long double from its smallest
+/// term, 40 terms (for |x| <= 1 the omitted rest is below 1 / 41!).
+long double phi_oracle(long double x, int offset) {
+  long double term = 1;
+  for (int n = 2; n <= offset; ++n) term /= n;  // 1 / offset!
+  long double terms[40];
+  for (int n = 0; n < 40; ++n) {
+    terms[n] = term;
+    term = term * x / static_cast<long double>(n + offset + 1);
+  }
+  long double sum = 0;
+  for (int n = 39; n >= 0; --n) sum += terms[n];
+  return sum;
+}
+
+}  // namespace
+
+TEST_CASE_TEMPLATE("the phi series reach their type's precision on |x| < 1", R, float, double,
                    long double) {
-  // Against the series summed directly in long double from its smallest term, 40 terms (the
-  // omitted rest below 4^-40 / 41!): within 4 ulps of R, long double included.
-  const auto oracle = [](long double x, int offset) {
-    long double term = 1;
-    for (int n = 2; n <= offset; ++n) term /= n;  // 1 / offset!
-    long double terms[40];
-    for (int n = 0; n < 40; ++n) {
-      terms[n] = term;
-      term = term * x / static_cast<long double>(n + offset + 1);
-    }
-    long double sum = 0;
-    for (int n = 39; n >= 0; --n) sum += terms[n];
-    return sum;
-  };
-  for (int i = -25; i <= 25; ++i) {
+  // Within 4 ulps of R, long double included.
+  for (int i = -100; i <= 100; ++i) {
     const R x = R(i) / R(101);
     INFO("x = ", static_cast<double>(x));
     const long double wide = static_cast<long double>(x);
-    CHECK(close(detail::phi_series<1>(x), static_cast<R>(oracle(wide, 1)), R(4)));
-    CHECK(close(detail::phi_series<2>(x), static_cast<R>(oracle(wide, 2)), R(4)));
+    CHECK(close(detail::phi_series<1>(x), static_cast<R>(phi_oracle(wide, 1)), R(4)));
+    CHECK(close(detail::phi_series<2>(x), static_cast<R>(phi_oracle(wide, 2)), R(4)));
   }
+}
+
+TEST_CASE_TEMPLATE("damping::Exact's phi2 is within 4 ulps on each side of the series' edge", R,
+                   float, double) {
+  // phi2(x) = (e^x - 1 - x) / x^2 at x = t ln d, from random d in (e^-7, 1) and t chosen for
+  // |x| in [0, 1.5] (the series below |x| = 1, (phi1 - 1) / x above) and in [1.5, 12]. The
+  // oracle: x in long double, phi2 by its series for |x| <= 1 and by expm1l beyond, where
+  // the cancellation costs long double less than 2 of its ulps (11 bits finer than double's).
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int outside = 0;
+  for (int i = 0; i < 40000; ++i) {
+    const double reach = i % 2 == 0 ? 1.5 * unit(random) : 1.5 + 10.5 * unit(random);
+    const R d = static_cast<R>(std::exp(-7 * unit(random)));
+    const R t = static_cast<R>(reach / -std::log(static_cast<double>(d)));
+    if (!(d > R(0) && d < R(1) && t > R(0))) continue;
+    const damping::LogDamping<R> state(d);
+    const R phi2 = damping::Exact::factors(state, t).phi2;
+    const long double x = std::log(static_cast<long double>(d)) * static_cast<long double>(t);
+    const long double oracle =
+        x >= -1.0L ? phi_oracle(x, 2) : (std::expm1(x) - x) / (x * x);
+    if (!close(phi2, static_cast<R>(oracle), R(4), R(0))) {
+      if (outside == 0) MESSAGE("x = ", static_cast<double>(x), ": phi2 ", phi2, ", oracle ",
+                                static_cast<double>(oracle));
+      ++outside;
+    }
+  }
+  CHECK(outside == 0);
 }
 
 TEST_CASE_TEMPLATE("values worked out by hand", R, float, double) {

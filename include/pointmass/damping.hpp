@@ -62,17 +62,17 @@
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
-/// How many terms of the phi series reach a precision of `digits` bits for |x| < 1/4: the
-/// fewest n for which the first omitted term of phi_1, 4^-n / (n + 1)!, is below 2^-(digits + 2),
-/// a quarter of an ulp of 1 (24 digits: 7, 53: 12, 64: 14, 113: 22).
+/// How many terms of the phi series reach a precision of `digits` bits for |x| < 1: the
+/// fewest n for which the first omitted term of phi_1, 1 / (n + 1)!, is below 2^-(digits + 2),
+/// a quarter of an ulp of 1 (24 digits: 11, 53: 18, 64: 21, 113: 31).
 constexpr int phi_terms_for(int digits) noexcept {
   double limit = 0.25;
   for (int i = 0; i < digits; ++i) limit /= 2;
-  double term = 1;  // 4^-n / (n + 1)! at n = 0
+  double term = 1;  // 1 / (n + 1)! at n = 0
   int n = 0;
   while (!(term < limit)) {
     ++n;
-    term /= 4.0 * (n + 1);
+    term /= n + 1;
   }
   return n;
 }
@@ -96,7 +96,7 @@ POINTMASS_HD constexpr PhiCoefficients<R> make_phi_coefficients() noexcept {
   return coefficients;
 }
 
-/// phi_Offset(x) = sum_{n>=0} x^n / (n + Offset)!, by Horner's rule, for |x| < 1/4, from
+/// phi_Offset(x) = sum_{n>=0} x^n / (n + Offset)!, by Horner's rule, for |x| < 1, from
 /// term N on. The coefficients are compile-time constants, so device code can read them; the
 /// rule is straight-line code (a loop over the coefficients stays a loop at g++ -O2, which
 /// then does not vectorise a batch's loop around it).
@@ -302,9 +302,9 @@ struct Exact {
   };
 
   /// Once per step: one exponential (d^t and d^t - 1 together, detail::exp_unit), and for
-  /// |x| < 1/4 the series of phi2 (where (phi1 - 1) / x would cancel); beyond, (phi1 - 1) / x
-  /// loses at most a factor 1 / |x| < 4 to rounding. Branch-free (selects), so a loop over
-  /// particles with their own damping vectorises.
+  /// |x| < 1 the series of phi2 (where (phi1 - 1) / x would cancel); beyond, (phi1 - 1) / x
+  /// multiplies phi1's relative rounding error by phi1 / (|x| phi2), below 2 / |x| <= 2.
+  /// Branch-free (selects), so a loop over particles with their own damping vectorises.
   template <Real R, class T>
   POINTMASS_DETAIL_FACTORS_INLINE POINTMASS_HD static constexpr Factors<R> factors(
       const State<R>& state, const T& t) noexcept {
@@ -315,8 +315,8 @@ struct Exact {
     const R x = power.exponent;
     const R divisor = detail::select_if_less(x, R(0), x, R(-1));
     const R phi1 = detail::select_if_less(x, R(0), power.kept_minus_one / divisor, R(1));
-    const R series_x = detail::select_if_less(R(-0.25), x, x, R(0));
-    const R phi2 = detail::select_if_less(R(-0.25), x, detail::phi_series<2>(series_x),
+    const R series_x = detail::select_if_less(R(-1), x, x, R(0));
+    const R phi2 = detail::select_if_less(R(-1), x, detail::phi_series<2>(series_x),
                                           (phi1 - R(1)) / divisor);
     // d = 0 keeps nothing, not even this step's push: the limit k -> -infinity (phi1 = -1 / x
     // would leave a tiny remainder of t ln 0's finite stand-in).
