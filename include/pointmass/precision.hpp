@@ -160,6 +160,32 @@ using canonical_precision_t =
 
 namespace detail {
 
+/// x = z + r rounded once to T, for z of a wider Real W, where z is x rounded to nearest in W
+/// and r has the sign of x - z (0 when z is x): static_cast<T>(z) unless z lies halfway
+/// between two T (a T midpoint is a W, so only there can rounding z differ from rounding x);
+/// there the neighbour on r's side. Where W is no wider than T, z itself.
+template <Real T, Real W>
+POINTMASS_HD constexpr T round_once(W z, W r) noexcept {
+  if constexpr (std::numeric_limits<W>::digits <= std::numeric_limits<T>::digits) {
+    return static_cast<T>(z);
+  } else {
+    const T y = static_cast<T>(z);
+    if (real_equal(r, W(0)) || !real_isfinite(y)) return y;
+    const W d = z - static_cast<W>(y);  // exact: z and y are within half an ulp of T
+    if (real_equal(d, W(0))) return y;
+    // y's neighbour on z's side, by its bits (T is float or double where W is wider).
+    using Bits = typename FloatBits<T>::type;
+    const Bits bits = __builtin_bit_cast(Bits, y);
+    const Bits smallest_negative = static_cast<Bits>(FloatBits<T>::magnitude_mask + 2u);
+    const bool outward = (d > W(0)) == (y > T(0));
+    const Bits next_bits = real_equal(y, T(0)) ? (d > W(0) ? Bits{1} : smallest_negative)
+                                               : static_cast<Bits>(outward ? bits + 1u : bits - 1u);
+    const T next = __builtin_bit_cast(T, next_bits);
+    if (!real_equal(static_cast<W>(next) - static_cast<W>(y), d + d)) return y;  // no tie
+    return (r > W(0)) == (d > W(0)) ? next : y;  // x beyond the midpoint, or before it
+  }
+}
+
 /// How a position of precision Position is stored and stepped. For a Real: one number.
 template <class Position>
 struct PositionStorage {
@@ -179,11 +205,20 @@ struct PositionStorage {
   /// The stored component of a value (the value is already finite).
   POINTMASS_HD static constexpr element element_of(value x) noexcept { return x; }
   /// p - origin, rounded once to T (float for a renderer, the arithmetic's Real for a force
-  /// generator): exact when the true offset is a T (then it is an element too, and IEEE
+  /// generator): the difference s rounded in the element's precision, its error e (TwoSum,
+  /// exact) and round_once(s, e), so a difference rounded to an element and then to T is not
+  /// rounded twice. Exact when the true offset is a T (then it is an element too, and IEEE
   /// subtraction returns it exactly).
   template <Real T = float>
   POINTMASS_HD static constexpr T relative(element p, value origin) noexcept {
-    return static_cast<T>(p - origin);
+    const element s = p - origin;
+    if constexpr (std::numeric_limits<element>::digits <= std::numeric_limits<T>::digits) {
+      return static_cast<T>(s);
+    } else {
+      const element b = s - p;
+      const element e = (p - (s - b)) + (-origin - b);
+      return round_once<T>(s, e);
+    }
   }
 };
 
@@ -216,10 +251,11 @@ struct PositionStorage<Compensated<R>> {
     return static_cast<R>(x - static_cast<value>(static_cast<R>(x)));
   }
   /// hi + lo - origin: hi - origin = s + e exactly (TwoSum), s + lo = s2 + e2 exactly
-  /// (TwoSum), and the offset is s2 + (e + e2), rounded to T (float, or R) at the end. For a
-  /// camera near the particle (|origin| within a factor of two of |hi|) e is 0 and s2 is the
-  /// offset rounded once to the wider type, so an offset that is a T comes out exact; the
-  /// error terms keep what the wide sums round away when the camera is far from the particle.
+  /// (TwoSum), and the offset is s2 + e + e2: e + e2 = t + te and s2 + t = z + ze (TwoSum
+  /// each), so the offset is z + (ze + te), z the offset rounded to the wider type (within
+  /// what te, tiny beside it, moves) and ze + te the sign of what it rounded away; round_once
+  /// rounds it to T (float, or R) once. For a camera near the particle (|origin| within a
+  /// factor of two of |hi|) e is 0; an offset that is a T comes out exact.
   template <Real T = float>
   POINTMASS_HD static constexpr T relative(R hi, R lo, value origin) noexcept {
     const value h = static_cast<value>(hi);
@@ -230,7 +266,13 @@ struct PositionStorage<Compensated<R>> {
     const value s2 = s + l;
     const value b2 = s2 - s;
     const value e2 = (s - (s2 - b2)) + (l - b2);
-    return static_cast<T>(s2 + (e + e2));
+    const value t = e + e2;
+    const value bt = t - e;
+    const value te = (e - (t - bt)) + (e2 - bt);
+    const value z = s2 + t;
+    const value bz = z - s2;
+    const value ze = (s2 - (z - bz)) + (t - bz);
+    return round_once<T>(z, ze + te);
   }
 };
 

@@ -363,16 +363,78 @@ TEST_CASE("render-relative: compensated positions, from hi + lo, exact wherever 
           static_cast<float>(Wide(a.position_x[i]) + Wide(a.position_error_x[i]) - Wide(camera.x)),
           static_cast<float>(Wide(a.position_y[i]) + Wide(a.position_error_y[i]) - Wide(camera.y)),
           static_cast<float>(Wide(a.position_z[i]) + Wide(a.position_error_z[i]) - Wide(camera.z))};
-      // Within one float rounding of the exact offset (rounded twice at most: the last sum
-      // in double, then to float).
-      CHECK(std::abs(double(buffer[i].x) - double(rounded.x)) <= float_ulp(std::abs(double(rounded.x))));
-      CHECK(std::abs(double(buffer[i].y) - double(rounded.y)) <= float_ulp(std::abs(double(rounded.y))));
-      CHECK(std::abs(double(buffer[i].z) - double(rounded.z)) <= float_ulp(std::abs(double(rounded.z))));
+      // The exact offset (hi + lo - camera: its bits span fewer than long double's 64)
+      // rounded once to float.
+      CHECK(same_bits(buffer[i], rounded));
     }
     ++checked;
   }
   CHECK(checked >= 10);
   CHECK(with_error_term > 0);
+}
+
+TEST_CASE("render-relative: rounded once, also where the offset rounded to double is a float "
+          "midpoint") {
+  // 1 + 2^-24 (a float midpoint) from a camera at -2^-80: the offset 1 + 2^-24 + 2^-80 lies
+  // above the midpoint and rounds to 1 + 2^-23; rounded to double first it is the midpoint,
+  // which then rounds to even, 1.
+  const double midpoint = 1.0 + 0x1p-24;
+  const Vector3<double> camera{-0x1p-80, 0x1p-80, 0};
+  const Vector3<float> wanted{1.0f + 0x1p-23f, 1.0f, 0};
+  pm::Particle<DoublePositions> wide;
+  wide.set_position({midpoint, midpoint, 0});
+  CHECK(same_bits(wide.position_relative_to(camera), wanted));
+  pm::ParticleSystem<DoublePositions> system(1);
+  system.spawn(Vector3<double>{midpoint, midpoint, 0}, {});
+  CHECK(same_bits(system.position_relative_to(0, camera), wanted));
+  pm::Particle<CompensatedPositions> pair;
+  pair.set_position({midpoint, midpoint, 0});
+  CHECK(same_bits(pair.position_relative_to(camera), wanted));
+  pm::ParticleSystem<CompensatedPositions> pairs(1);
+  pairs.spawn(Vector3<double>{midpoint, midpoint, 0}, {});
+  CHECK(same_bits(pairs.position_relative_to(0, camera), wanted));
+}
+
+TEST_CASE_TEMPLATE("render-relative: the exact offset rounded once to float, against long double",
+                   S, DoublePositions, CompensatedPositions) {
+  // Positions p and cameras o within a factor of 2^8 of each other (so p - o is exact in long
+  // double's 64 bits), o placed so that p - o lies within a double's ulp of a float midpoint:
+  // there a difference rounded to double and then to float is rounded twice.
+  std::mt19937_64 random(23);
+  std::uniform_int_distribution<int> exponent(-30, 30);
+  std::uniform_real_distribution<double> unit(1, 2);
+  std::uniform_real_distribution<double> ratio(1.0 / 256, 0.5);
+  pm::Particle<S> particle;
+  pm::ParticleSystem<S> system(1);
+  system.spawn(Vector3<double>{}, {});
+  int checked = 0;
+  int twice_differs = 0;  // cases where rounding the double difference would be wrong
+  for (int n = 0; n < 20000; ++n) {
+    // A float midpoint m, the camera o beside it, and p = m + o rounded (to double, then to
+    // what S stores): p - o is m plus what p rounded.
+    const float f = static_cast<float>(std::ldexp(unit(random), exponent(random)));
+    const double m = double(f) + double(std::nextafter(f, 2 * f) - f) / 2;
+    const double o = (n % 2 == 0 ? 1 : -1) * m * ratio(random);
+    particle.set_position({m + o, -(m + o), 0});
+    const double p = particle.position().x;
+    if (p == 0 || -particle.position().y != p) continue;
+    const Wide exact = Wide(p) - Wide(o);
+    if (Wide(o) != Wide(p) - exact) continue;  // not exact after all
+    const float oracle = static_cast<float>(exact);
+    twice_differs += static_cast<float>(p - o) != oracle;
+    const Vector3<double> camera{o, -o, 0};
+    const Vector3<float> got = particle.position_relative_to(camera);
+    system.set_position(0, particle.position());
+    if (!same_bits(got, Vector3<float>{oracle, -oracle, 0}) ||
+        !same_bits(system.position_relative_to(0, camera), got)) {
+      INFO("p = ", p, ", o = ", o);
+      CHECK(same_bits(got, Vector3<float>{oracle, -oracle, 0}));
+      CHECK(same_bits(system.position_relative_to(0, camera), got));
+    }
+    ++checked;
+  }
+  CHECK(checked > 10000);
+  CHECK(twice_differs > 100);
 }
 
 TEST_CASE("render-relative: a particle and the system agree, and a short buffer writes nothing") {
