@@ -48,6 +48,9 @@ std::string violation_message(F&& call) {
   return "(no violation)";
 }
 
+int violations = 0;
+void count_violation(const pointmass::ContractViolation&) { ++violations; }
+
 }  // namespace
 
 TEST_CASE_TEMPLATE("magnitude and normalized neither overflow nor underflow", R, float, double) {
@@ -172,6 +175,77 @@ TEST_CASE_TEMPLATE("apply_links with a bad index changes nothing", R, float, dou
         std::string::npos);
   // Before the fix the first link's force was added before the second was rejected.
   CHECK(f == std::array<Vector3<R>, 3>{});
+}
+
+TEST_CASE_TEMPLATE("an adapter with a span shorter than its size() is reported, with no force",
+                   R, float, double) {
+  // size() is the length of the forces (3); every other span is a view of the first 2
+  // elements of storage for 3, so a read of element 2 stays inside the storage.
+  const std::array<Vector3<R>, 3> positions{{{R(1), R(0), R(0)}, {R(2), R(0), R(0)},
+                                             {R(3), R(0), R(0)}}};
+  const std::array<Vector3<R>, 3> velocities{{{R(1), R(0), R(0)}, {R(1), R(0), R(0)},
+                                              {R(1), R(0), R(0)}}};
+  const std::array<R, 3> inverse_masses{R(1), R(1), R(1)};
+  const std::span<const Vector3<R>> p_all(positions), v_all(velocities);
+  const std::span<const R> m_all(inverse_masses);
+  const forces::Drag<R> drag(R(1), R(0));
+  const forces::LinkSprings<R> springs(R(10), R(0));
+  const std::array<forces::Link, 1> links{{{0, 2}}};
+  const auto link_span = std::span<const forces::Link>(links);
+
+  std::array<Vector3<R>, 3> f{};
+  forces::SpanBodies<R> short_positions{p_all.first(2), v_all, m_all, f};
+  CHECK(violation_message([&] { forces::apply(drag, short_positions, R(0.01)); }) ==
+        "pointmass: forces::apply: argument 'positions' = 2 elements for size() = 3 must be at "
+        "least size() elements long (size() is the length of the forces)");
+  CHECK(violation_message([&] { forces::apply_links(springs, link_span, short_positions); })
+            .find("forces::apply_links: argument 'positions' = 2 elements for size() = 3") !=
+        std::string::npos);
+  forces::SpanBodies<R> short_velocities{p_all, v_all.first(2), m_all, f};
+  CHECK(violation_message([&] { forces::apply(drag, short_velocities, R(0.01)); })
+            .find("'velocities' = 2 elements for size() = 3") != std::string::npos);
+  forces::SpanBodies<R> short_masses{p_all, v_all, m_all.first(1), f};
+  CHECK(violation_message([&] { forces::apply(drag, short_masses, R(0.01)); })
+            .find("'inverse_masses' = 1 elements for size() = 3") != std::string::npos);
+  CHECK(f == std::array<Vector3<R>, 3>{});
+  // An empty inverse_masses is the uniform one, and longer spans are fine.
+  std::array<Vector3<R>, 2> f2{};
+  forces::SpanBodies<R> uniform{p_all, v_all, {}, f2};
+  CHECK(violation_message([&] { forces::apply(drag, uniform, R(0.01)); }) == "(no violation)");
+  CHECK(f2[1] == Vector3<R>{R(-1), R(0), R(0)});
+
+  std::array<R, 3> px{}, py{}, pz{}, vx{R(1), R(1), R(1)}, vy{}, vz{}, fx{}, fy{}, fz{};
+  for (std::size_t i = 0; i < 3; ++i) px[i] = positions[i].x;
+  const auto first2 = [](const std::array<R, 3>& a) { return std::span<const R>(a).first(2); };
+  forces::SoaBodies<R> soa_short_vz{px, py, pz, vx, vy, first2(vz), {}, fx, fy, fz};
+  CHECK(violation_message([&] { forces::apply(drag, soa_short_vz, R(0.01)); })
+            .find("forces::apply: argument 'vz' = 2 elements for size() = 3") !=
+        std::string::npos);
+  CHECK(violation_message([&] { forces::apply_links(springs, link_span, soa_short_vz); })
+            .find("forces::apply_links: argument 'vz' = 2") != std::string::npos);
+  forces::SoaBodies<R> soa_short_px{first2(px), py, pz, vx, vy, vz, {}, fx, fy, fz};
+  CHECK(violation_message([&] { forces::apply_links(springs, link_span, soa_short_px); })
+            .find("forces::apply_links: argument 'px' = 2") != std::string::npos);
+  // The forces are written through fx, fy and fz: fz too short is a write beyond its end.
+  forces::SoaBodies<R> soa_short_fz{px, py, pz, vx, vy, vz, {}, fx, fy,
+                                    std::span<R>(fz).first(2)};
+  CHECK(violation_message([&] { forces::apply(drag, soa_short_fz, R(0.01)); })
+            .find("'fz' = 2 elements for size() = 3") != std::string::npos);
+  CHECK(fx == std::array<R, 3>{});
+  CHECK(fz == std::array<R, 3>{});
+
+  // With a handler that returns: reported once per call, and still no force.
+  const auto previous = pointmass::set_contract_handler(&count_violation);
+  violations = 0;
+  forces::apply(drag, short_positions, R(0.01));
+  forces::apply_links(springs, link_span, soa_short_px);
+  forces::apply(drag, forces::SoaBodies<R>{px, py, pz, vx, vy, vz, {}, fx, fy,
+                                           std::span<R>(fz).first(2)},
+                R(0.01));
+  pointmass::set_contract_handler(previous);
+  CHECK(violations == 3);
+  CHECK(f == std::array<Vector3<R>, 3>{});
+  CHECK(fx == std::array<R, 3>{});
 }
 
 // --- the registry ------------------------------------------------------------------------------

@@ -182,6 +182,33 @@ constexpr bool check_buffer(const char* function, const char* argument, std::siz
   return false;
 }
 
+[[gnu::cold]] [[gnu::noinline]] inline void report_span(const char* function,
+                                                        const char* argument,
+                                                        std::size_t span_size,
+                                                        std::size_t size) {
+  ContractViolation violation{function,
+                              argument,
+                              "at least size() elements long (size() is the length of the "
+                              "forces)",
+                              {static_cast<long double>(span_size), 0.0L, 0.0L},
+                              1,
+                              {}};
+  std::size_t used = 0;
+  append_number(violation.text, used, span_size);
+  append_text(violation.text, used, " elements for size() = ");
+  append_number(violation.text, used, size);
+  report(violation, used);
+}
+
+/// A span of a batch adapter (forces::SpanBodies, SoaBodies) with an element for each of the
+/// `size` bodies: a shorter one would be read or written beyond its end.
+constexpr bool check_span(const char* function, const char* argument, std::size_t span_size,
+                          std::size_t size) {
+  if (span_size >= size) return true;
+  report_span(function, argument, span_size, size);
+  return false;
+}
+
 /// A fraction of a step (interpolation's alpha): in [0, 1].
 template <Real R>
 constexpr bool check_fraction(const char* function, const char* argument, R value) {

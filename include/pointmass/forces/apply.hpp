@@ -51,11 +51,14 @@ constexpr void update_force(G& generator, B& body, typename B::real duration) {
   }
 }
 
-/// Adds `generator`'s force to every body of the batch. With POINTMASS_CHECKS on, every force
-/// is computed and checked first, so a force beyond the range of the number type is reported
-/// and no body gets a force; with checks off, the forces are added unchecked.
+/// Adds `generator`'s force to every body of the batch. An adapter with a span shorter than
+/// its size() (SpanBodies, SoaBodies: valid) is reported, always, and no body gets a force.
+/// With POINTMASS_CHECKS on, every force is computed and checked first, so a force beyond the
+/// range of the number type is reported and no body gets a force; with checks off, the forces
+/// are added unchecked.
 template <Bodies B, FieldGenerator<typename B::real> G>
 constexpr void apply(const G& generator, B& bodies, typename B::real duration) {
+  if (!detail::valid_bodies(bodies, "forces::apply")) return;
   const std::size_t n = bodies.size();
   const auto force_on = [&](std::size_t i) {
     return generator.force(bodies.position(i), bodies.velocity(i), bodies.inverse_mass(i),

@@ -6,7 +6,8 @@
 // WideBody and WideBodies: a particle or batch whose positions are stored wider than its
 // arithmetic, precision.hpp), the batch adapters SpanBodies (arrays of Vector3s) and SoaBodies
 // (one array per component), and relative_to (RelativeBody, RelativeBodies): a wide particle or
-// batch seen by generators from a local origin.
+// batch seen by generators from a local origin; detail::valid_bodies, the adapters' check of
+// their spans that apply and apply_links make first.
 // Must not include: particle.hpp, particle_system.hpp (the concepts are what those satisfy; a
 // generator never needs the concrete types), or another forces header.
 #pragma once
@@ -16,6 +17,7 @@
 #include <span>
 #include <type_traits>
 
+#include "../detail/validate.hpp"
 #include "../real.hpp"
 #include "../vector3.hpp"
 
@@ -60,7 +62,8 @@ template <class B>
 concept BodyView = std::remove_cvref_t<B>::refers_to_bodies;
 
 /// Bodies stored as arrays of Vector3s. `inverse_mass` may be empty: then every body has
-/// `uniform_inverse_mass`. Forces are added to `force`.
+/// `uniform_inverse_mass`. Forces are added to `force`, whose length is size(): every other
+/// span needs at least that many elements, which apply and apply_links check first (valid).
 template <Real R>
 struct SpanBodies {
   using real = R;
@@ -72,6 +75,16 @@ struct SpanBodies {
   R uniform_inverse_mass = R(1);
 
   std::size_t size() const noexcept { return forces.size(); }
+  /// Whether every span has an element for each body; if not, reports the first that is
+  /// shorter (naming `function`, the span and its length) and returns false.
+  constexpr bool valid(const char* function) const {
+    using pointmass::detail::check_span;
+    const std::size_t n = size();
+    return check_span(function, "positions", positions.size(), n) &&
+           check_span(function, "velocities", velocities.size(), n) &&
+           (inverse_masses.empty() ||
+            check_span(function, "inverse_masses", inverse_masses.size(), n));
+  }
   Vector3<R> position(std::size_t i) const noexcept { return positions[i]; }
   Vector3<R> velocity(std::size_t i) const noexcept { return velocities[i]; }
   R inverse_mass(std::size_t i) const noexcept {
@@ -81,7 +94,9 @@ struct SpanBodies {
 };
 
 /// Bodies stored as structure of arrays: one array per component. `inverse_mass` may be
-/// empty (then `uniform_inverse_mass`). Forces are added to fx, fy, fz.
+/// empty (then `uniform_inverse_mass`). Forces are added to fx, fy, fz; size() is fx's length,
+/// and every other span needs at least that many elements, which apply and apply_links check
+/// first (valid).
 template <Real R>
 struct SoaBodies {
   using real = R;
@@ -93,6 +108,18 @@ struct SoaBodies {
   R uniform_inverse_mass = R(1);
 
   std::size_t size() const noexcept { return fx.size(); }
+  /// Whether every span has an element for each body; if not, reports the first that is
+  /// shorter (naming `function`, the span and its length) and returns false.
+  constexpr bool valid(const char* function) const {
+    using pointmass::detail::check_span;
+    const std::size_t n = size();
+    return check_span(function, "px", px.size(), n) && check_span(function, "py", py.size(), n) &&
+           check_span(function, "pz", pz.size(), n) && check_span(function, "vx", vx.size(), n) &&
+           check_span(function, "vy", vy.size(), n) && check_span(function, "vz", vz.size(), n) &&
+           (inverse_masses.empty() ||
+            check_span(function, "inverse_masses", inverse_masses.size(), n)) &&
+           check_span(function, "fy", fy.size(), n) && check_span(function, "fz", fz.size(), n);
+  }
   Vector3<R> position(std::size_t i) const noexcept { return {px[i], py[i], pz[i]}; }
   Vector3<R> velocity(std::size_t i) const noexcept { return {vx[i], vy[i], vz[i]}; }
   R inverse_mass(std::size_t i) const noexcept {
@@ -149,6 +176,20 @@ concept WideBodies = requires(B& b, const B& cb, std::size_t i,
 };
 
 namespace detail {
+
+/// Whether `bodies` may be indexed 0 .. size() - 1: an adapter's own check of its spans
+/// (SpanBodies::valid, SoaBodies::valid), which reports a short one; true for other bodies.
+/// apply and apply_links call it before reading any body, whatever POINTMASS_CHECKS.
+template <class B>
+constexpr bool valid_bodies(const B& bodies, const char* function) {
+  if constexpr (requires {
+                  { bodies.valid(function) } -> std::same_as<bool>;
+                }) {
+    return bodies.valid(function);
+  } else {
+    return true;
+  }
+}
 
 /// What both views hold: the viewed particle or batch (not owned: it must outlive the view)
 /// and a copy of the local origin.

@@ -296,12 +296,14 @@ using LinkSprings = BasicLinkSprings<R, false>;
 template <Real R>
 using LinkBungees = BasicLinkSprings<R, true>;
 
-/// Adds every link's spring force to its two bodies. Every index is checked (always) before
-/// any force is added, and with POINTMASS_CHECKS on every force too: a bad link or a force
+/// Adds every link's spring force to its two bodies. An adapter's spans (SpanBodies,
+/// SoaBodies: valid) and every index are checked (always) before any force is added, and with
+/// POINTMASS_CHECKS on every force too: a span shorter than size(), a bad link or a force
 /// beyond the range of the number type is reported and no body gets a force.
 template <Bodies B, bool IsBungee>
 constexpr void apply_links(const BasicLinkSprings<typename B::real, IsBungee>& springs,
                            std::span<const Link> links, B& bodies) {
+  if (!detail::valid_bodies(bodies, "forces::apply_links")) return;
   const std::size_t n = bodies.size();
   for (const Link& link : links) {
     if (!pointmass::detail::check_index("forces::apply_links", "link.first", link.first, n) ||
