@@ -165,6 +165,14 @@ TEST_CASE_TEMPLATE("stiff spring advance: like integrate for immovable bodies, z
   spring.advance(wall, R(0.1));
   CHECK(wall.position() == Vector3<R>{R(1), R(0), R(0)});
   CHECK(wall.force_accumulator() == Vector3<R>{});
+  // A zero step changes nothing on an immovable body either: integrate(0) keeps its forces.
+  Body<R> still_wall = wall, integrated_wall = wall;
+  still_wall.add_force({R(5), R(0), R(0)});
+  integrated_wall.add_force({R(5), R(0), R(0)});
+  spring.advance(still_wall, R(0));
+  integrated_wall.integrate(R(0));
+  CHECK(still_wall.force_accumulator() == Vector3<R>{R(5), R(0), R(0)});
+  CHECK(still_wall.force_accumulator() == integrated_wall.force_accumulator());
   Body<R> body;
   body.set_position({R(1), R(0), R(0)});
   body.add_force({R(5), R(0), R(0)});

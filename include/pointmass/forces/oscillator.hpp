@@ -138,9 +138,9 @@ class StiffSpringParameters {
 /// the closed form's at any step: no stability limit, no period error; with gravity (constant
 /// a) they are exact at steps w0 t >= 1 and second-order accurate below; with forces that
 /// change during the step, second order.
-/// The body's damping policy is not applied (the spring's damping c is the damping); the
-/// accumulator is cleared, an immovable body does not move, a zero step changes nothing, as
-/// `integrate` does. A negative or non-finite duration is reported, as is a state beyond the
+/// The body's damping policy is not applied (the spring's damping c is the damping); as
+/// `integrate` does, a zero step changes nothing (an immovable body's accumulator included),
+/// and otherwise the accumulator is cleared and an immovable body does not move. A negative or non-finite duration is reported, as is a state beyond the
 /// range of the number type (docs/forces.md, "Ranges"); either changes nothing.
 template <Real R>
 class StiffSpring : public StiffSpringParameters<R> {
@@ -150,12 +150,12 @@ class StiffSpring : public StiffSpringParameters<R> {
   template <SteppableBody<R> B>
   constexpr void advance(B& body, R duration) const {
     if (!pointmass::detail::check_duration("StiffSpring::advance", duration)) return;
+    if (duration == R(0)) return;  // before the immovable case: integrate(0) keeps the forces
     const R inverse_mass = body.inverse_mass();
     if (!(inverse_mass > R(0))) {
       body.clear_accumulator();
       return;
     }
-    if (duration == R(0)) return;
     const Vector3<R> a = body.acceleration() + body.force_accumulator() * inverse_mass;
     const R w0_squared = this->k_ * inverse_mass;
     OscillatorState<R> s;
