@@ -287,3 +287,36 @@ TEST_CASE_TEMPLATE("relative_to: a view passed as a temporary adds what a named 
   REQUIRE(largest_component(a.force_accumulator()) > 0.0f);
   CHECK(same_bits(b.force_accumulator(), a.force_accumulator()));
 }
+
+namespace {
+
+/// A user's generator with its own update_force member for a wide particle: it handles the
+/// wide position itself (this one needs none: a thrust in the particle's frame).
+template <class S>
+struct Thruster {
+  Vector3<float> thrust{1.0f, 2.0f, -0.5f};
+  void update_force(pm::Particle<S>& particle, float) const { particle.add_force(thrust); }
+};
+
+}  // namespace
+
+TEST_CASE_TEMPLATE("a generator with its own update_force member is called on a wide particle",
+                   S, DoublePositions, CompensatedPositions) {
+  // A field generator needs relative_to (compile-fail forces_on_wide_particle*); a generator
+  // with its own member is called, through update_force and through a registry.
+  pm::Particle<S> ship;
+  ship.set_position(far_from({3.0f, -1.0f, 2.0f}));
+  const Thruster<S> thruster;
+  forces::update_force(thruster, ship, dt);
+  CHECK(ship.force_accumulator() == thruster.thrust);
+  ship.clear_accumulator();
+
+  forces::ForceRegistry<pm::Particle<S>, Thruster<S>> known;
+  forces::ForceRegistry<pm::Particle<S>> erased;
+  known.template emplace<Thruster<S>>(ship);
+  erased.add_owned(ship, thruster);
+  erased.add(ship, thruster);  // a const generator, type-erased
+  known.update_forces(dt);
+  erased.update_forces(dt);
+  CHECK(ship.force_accumulator() == thruster.thrust * 3.0f);
+}

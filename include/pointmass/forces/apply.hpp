@@ -4,8 +4,9 @@
 // Owns: the FieldGenerator concept (a generator whose force depends on one body's own state:
 // `force(p, v, inverse_mass, t)`), the free `update_force(generator, body, t)` that adds a
 // generator's force to one body, and `apply(generator, bodies, t)` for a batch; for a body or
-// batch with wide positions (bodies.hpp: WideBody, WideBodies), the one-sentence error that
-// points to relative_to.
+// batch with wide positions (bodies.hpp: WideBody, WideBodies) and a field generator, the
+// one-sentence error that points to relative_to (a generator's own update_force member is
+// called on any body it accepts).
 // Must not include: particle.hpp, particle_system.hpp, a generator's header (every generator
 // reaches bodies through these two functions; none needs them to be declared first).
 #pragma once
@@ -101,9 +102,12 @@ void apply(const G&, B&&, typename std::remove_cvref_t<B>::real) {
 }
 
 /// A particle or batch with positions stored wider than its arithmetic (Precision<float,
-/// double>, ...) reaches the generators through relative_to(body, origin) (bodies.hpp); passed
-/// as it is, it gets this sentence rather than a list of unmet requirements.
+/// double>, ...) reaches the field generators through relative_to(body, origin) (bodies.hpp);
+/// passed as it is, it gets this sentence rather than a list of unmet requirements. A
+/// generator with its own update_force member for it is the user's code, which handles the
+/// wide position itself: the first update_force above calls it.
 template <class G, WideBody B>
+  requires(!HasUpdateForce<G, B>)
 void update_force(G&, B&, typename B::real) {
   static_assert(sizeof(B) == 0,
                 "forces::update_force: this particle stores its position wider than its "
