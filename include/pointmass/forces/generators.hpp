@@ -182,17 +182,37 @@ using AnchoredBungee = BasicAnchoredSpring<R, true>;
 /// A spring (or bungee) between two bodies, as the reference engine has it: registered with
 /// one body, it pulls that body towards `other`; register a second one, with the ends swapped,
 /// for the other body. In a batch, `apply_links` does both ends at once. The other body is
-/// not owned: it must outlive the spring's use.
+/// not owned: it must outlive the spring's use, and a temporary (a particle returned by value,
+/// a relative_to view made in the call) is refused at compile time with one sentence.
 template <class Body, bool IsBungee = false>
 class BasicSpring : public SpringParameters<typename Body::real, IsBungee> {
+  /// An argument that would bind `const Body&` to a temporary.
+  template <class Other>
+  static constexpr bool temporary_other =
+      !std::is_lvalue_reference_v<Other> && std::is_convertible_v<Other&&, const Body&>;
+
  public:
   using real = typename Body::real;
   constexpr BasicSpring() noexcept = default;
   constexpr BasicSpring(const Body& other, real stiffness, real rest_length)
       : SpringParameters<real, IsBungee>(stiffness, rest_length), other_(&other) {}
+  template <class Other>
+    requires temporary_other<Other>
+  BasicSpring(Other&&, real, real) {
+    static_assert(!temporary_other<Other>,
+                  "Spring keeps the address of the other body, and the other body is a "
+                  "temporary: pass a named body (or view) that outlives the spring.");
+  }
 
   constexpr const Body* other() const noexcept { return other_; }
   constexpr void set_other(const Body& other) noexcept { other_ = &other; }
+  template <class Other>
+    requires temporary_other<Other>
+  void set_other(Other&&) {
+    static_assert(!temporary_other<Other>,
+                  "Spring::set_other keeps the address of the other body, and the other body "
+                  "is a temporary: pass a named body (or view) that outlives the spring.");
+  }
 
   /// Adds the force from the other end (nothing without one); a force beyond the range of
   /// the number type is reported, as by forces::update_force.
