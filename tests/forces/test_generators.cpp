@@ -215,6 +215,58 @@ TEST_CASE_TEMPLATE("with a handler that returns, a rejected value changes nothin
   pointmass::set_contract_handler(previous);
 }
 
+TEST_CASE_TEMPLATE("a constructor that rejects any argument leaves the generator inert", R, float,
+                   double) {
+  const auto previous = pointmass::set_contract_handler(&returning_handler);
+  returning_handler_calls = 0;
+  const R nan = std::numeric_limits<R>::quiet_NaN();
+  // A moving body, away from every anchor and under every water surface: each generator here,
+  // built with valid arguments, gives it a force.
+  const Particle<R> body = body_at<R>({R(3), R(-2), R(1)}, {R(1), R(0.5), R(0)});
+  const Vector3<R> none{};
+  CHECK(force_on(forces::Gravity<R>({R(0), nan, R(0)}), body) == none);
+  CHECK(force_on(forces::Drag<R>(R(-1), R(0.5)), body) == none);
+  CHECK(force_on(forces::Drag<R>(R(0.5), nan), body) == none);
+  const forces::AnchoredSpring<R> hook({nan, R(5), R(0)}, R(40), R(0.5));
+  CHECK(force_on(hook, body) == none);
+  CHECK(hook.stiffness() == R(0));
+  CHECK(force_on(forces::AnchoredSpring<R>({}, R(40), R(-1)), body) == none);
+  CHECK(force_on(forces::AnchoredBungee<R>({}, R(40), R(-200)), body) == none);
+  Particle<R> other = body_at<R>({});
+  CHECK(force_on(forces::Spring<Particle<R>>(other, R(20), R(-1)), body) == none);
+  CHECK(force_on(forces::Bungee<Particle<R>>(other, nan, R(1)), body) == none);
+  CHECK(force_on(forces::Buoyancy<R>(R(-0.5), R(0.1), R(10)), body) == none);
+  CHECK(force_on(forces::Buoyancy<R>(R(0.5), R(0.1), nan), body) == none);
+  CHECK(force_on(forces::Buoyancy<R>(R(0.5), R(0.1), R(10), R(-1)), body) == none);
+  CHECK(force_on(forces::Buoyancy<R>(R(0.5), R(0.1), R(10), R(1000), R(-9.807)), body) ==
+        none);
+  CHECK(force_on(forces::PositionOnlyStiffSpring<R>({nan, R(0), R(0)}, R(50), R(1)), body) ==
+        none);
+  CHECK(force_on(forces::PositionOnlyStiffSpring<R>({}, R(50), R(-1)), body) == none);
+  // Two bad arguments: each is reported.
+  CHECK(force_on(forces::Drag<R>(R(-1), R(-2)), body) == none);
+
+  const std::array<Vector3<R>, 2> positions{{{R(0), R(0), R(0)}, {R(0), R(-3), R(0)}}};
+  const std::array<Vector3<R>, 2> velocities{};
+  std::array<Vector3<R>, 2> f{};
+  forces::SpanBodies<R> bodies{positions, velocities, {}, f};
+  const std::array<forces::Link, 1> links{{{0, 1}}};
+  forces::apply_links(forces::LinkSprings<R>(R(10), R(-1)), std::span<const forces::Link>(links),
+                      bodies);
+  CHECK(f == std::array<Vector3<R>, 2>{});
+
+  // A stiff spring with a rejected argument steps the body as no spring would: x + v t.
+  for (const auto& stiff : {forces::StiffSpring<R>({nan, R(0), R(0)}, R(100), R(1)),
+                            forces::StiffSpring<R>({}, R(100), R(-1))}) {
+    Particle<R> moved = body;
+    stiff.advance(moved, R(0.5));
+    CHECK(close(moved.position(), body.position() + body.velocity() * R(0.5), R(4)));
+    CHECK(moved.velocity() == body.velocity());
+  }
+  CHECK(returning_handler_calls == 19);
+  pointmass::set_contract_handler(previous);
+}
+
 // --- the batch path ---------------------------------------------------------------------------
 
 namespace {

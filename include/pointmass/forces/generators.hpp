@@ -70,7 +70,11 @@ class Gravity {
  public:
   using real = R;
   constexpr Gravity() noexcept = default;
-  constexpr explicit Gravity(const Vector3<R>& g) { set_gravity(g); }
+  /// A rejected `g` leaves the generator inert (g = 0), not at the default's Earth gravity.
+  constexpr explicit Gravity(const Vector3<R>& g) {
+    g_ = pointmass::detail::check_finite("Gravity::set_gravity", "gravity", g) ? g
+                                                                                : Vector3<R>{};
+  }
 
   constexpr Vector3<R> gravity() const noexcept { return g_; }
   constexpr void set_gravity(const Vector3<R>& g) {
@@ -94,9 +98,14 @@ class Drag {
  public:
   using real = R;
   constexpr Drag() noexcept = default;
+  /// Both are checked (each rejected one is reported); one rejected leaves both 0: no force.
   constexpr Drag(R k1, R k2) {
-    set_k1(k1);
-    set_k2(k2);
+    const bool k1_valid = pointmass::detail::check_non_negative("Drag::set_k1", "k1", k1);
+    const bool k2_valid = pointmass::detail::check_non_negative("Drag::set_k2", "k2", k2);
+    if (k1_valid && k2_valid) {
+      k1_ = k1;
+      k2_ = k2;
+    }
   }
 
   constexpr R k1() const noexcept { return k1_; }
@@ -126,9 +135,16 @@ class SpringParameters {
  public:
   using real = R;
   constexpr SpringParameters() noexcept = default;
+  /// Both are checked (each rejected one is reported); one rejected leaves both 0: no force.
   constexpr SpringParameters(R stiffness, R rest_length) {
-    set_stiffness(stiffness);
-    set_rest_length(rest_length);
+    const bool k_valid =
+        pointmass::detail::check_non_negative("set_stiffness", "stiffness", stiffness);
+    const bool length_valid =
+        pointmass::detail::check_non_negative("set_rest_length", "rest_length", rest_length);
+    if (k_valid && length_valid) {
+      k_ = stiffness;
+      rest_length_ = rest_length;
+    }
   }
   constexpr R stiffness() const noexcept { return k_; }
   constexpr R rest_length() const noexcept { return rest_length_; }
@@ -147,6 +163,12 @@ class SpringParameters {
   }
 
  protected:
+  /// What a derived constructor that rejected an argument leaves: no force.
+  constexpr void make_inert() noexcept {
+    k_ = R(0);
+    rest_length_ = R(0);
+  }
+
   R k_ = R(0);
   R rest_length_ = R(0);
 };
@@ -157,9 +179,15 @@ template <Real R, bool IsBungee = false>
 class BasicAnchoredSpring : public SpringParameters<R, IsBungee> {
  public:
   constexpr BasicAnchoredSpring() noexcept = default;
+  /// Every argument is checked (each rejected one is reported); one rejected leaves the
+  /// spring inert: stiffness and rest length 0.
   constexpr BasicAnchoredSpring(const Vector3<R>& anchor, R stiffness, R rest_length)
       : SpringParameters<R, IsBungee>(stiffness, rest_length) {
-    set_anchor(anchor);
+    if (pointmass::detail::check_finite("set_anchor", "anchor", anchor)) {
+      anchor_ = anchor;
+    } else {
+      this->make_inert();
+    }
   }
   constexpr Vector3<R> anchor() const noexcept { return anchor_; }
   constexpr void set_anchor(const Vector3<R>& anchor) {
@@ -243,13 +271,27 @@ class Buoyancy {
  public:
   using real = R;
   constexpr Buoyancy() noexcept = default;
+  /// Every argument is checked (each rejected one is reported); one rejected leaves every
+  /// parameter at its default, volume 0: no force.
   constexpr Buoyancy(R max_depth, R volume, R water_height, R liquid_density = R(1000),
                      R g = R(9.807)) {
-    set_max_depth(max_depth);
-    set_volume(volume);
-    set_water_height(water_height);
-    set_liquid_density(liquid_density);
-    set_gravity(g);
+    using pointmass::detail::check_finite;
+    using pointmass::detail::check_non_negative;
+    using pointmass::detail::check_positive;
+    const bool valid[] = {
+        check_positive("Buoyancy::set_max_depth", "max_depth", max_depth),
+        check_positive("Buoyancy::set_volume", "volume", volume),
+        check_finite("Buoyancy::set_water_height", "water_height", water_height),
+        check_non_negative("Buoyancy::set_liquid_density", "liquid_density", liquid_density),
+        check_non_negative("Buoyancy::set_gravity", "g", g)};
+    for (const bool v : valid) {
+      if (!v) return;
+    }
+    max_depth_ = max_depth;
+    volume_ = volume;
+    water_height_ = water_height;
+    density_ = liquid_density;
+    g_ = g;
   }
 
   constexpr R max_depth() const noexcept { return max_depth_; }

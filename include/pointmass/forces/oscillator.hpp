@@ -87,10 +87,19 @@ class StiffSpringParameters {
  public:
   using real = R;
   constexpr StiffSpringParameters() noexcept = default;
+  /// Every argument is checked (each rejected one is reported); one rejected leaves the
+  /// spring inert: anchor, stiffness and damping 0 (advance moves a body as without it).
   constexpr StiffSpringParameters(const Vector3<R>& anchor, R stiffness, R damping) {
-    set_anchor(anchor);
-    set_stiffness(stiffness);
-    set_damping(damping);
+    using pointmass::detail::check_finite;
+    using pointmass::detail::check_non_negative;
+    const bool anchor_valid = check_finite("StiffSpring::set_anchor", "anchor", anchor);
+    const bool k_valid = check_non_negative("StiffSpring::set_stiffness", "stiffness", stiffness);
+    const bool c_valid = check_non_negative("StiffSpring::set_damping", "damping", damping);
+    if (anchor_valid && k_valid && c_valid) {
+      anchor_ = anchor;
+      k_ = stiffness;
+      c_ = damping;
+    }
   }
 
   constexpr Vector3<R> anchor() const noexcept { return anchor_; }
