@@ -149,8 +149,9 @@ class StiffSpringParameters {
 /// change during the step, second order.
 /// The body's damping policy is not applied (the spring's damping c is the damping); as
 /// `integrate` does, a zero step changes nothing (an immovable body's accumulator included),
-/// and otherwise the accumulator is cleared and an immovable body does not move. A negative or non-finite duration is reported, as is a state beyond the
-/// range of the number type (docs/forces.md, "Ranges"); either changes nothing.
+/// and otherwise the accumulator is cleared and an immovable body does not move. A negative
+/// or non-finite duration is reported, as is a state beyond the range of the number type
+/// (docs/forces.md, "Ranges"); either changes nothing.
 template <Real R>
 class StiffSpring : public StiffSpringParameters<R> {
  public:
