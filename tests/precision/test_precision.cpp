@@ -381,18 +381,16 @@ TEST_CASE("render-relative: rounded once, also where the offset rounded to doubl
   const double midpoint = 1.0 + 0x1p-24;
   const Vector3<double> camera{-0x1p-80, 0x1p-80, 0};
   const Vector3<float> wanted{1.0f + 0x1p-23f, 1.0f, 0};
-  pm::Particle<DoublePositions> wide;
-  wide.set_position({midpoint, midpoint, 0});
-  CHECK(same_bits(wide.position_relative_to(camera), wanted));
-  pm::ParticleSystem<DoublePositions> system(1);
-  system.spawn(Vector3<double>{midpoint, midpoint, 0}, {});
-  CHECK(same_bits(system.position_relative_to(0, camera), wanted));
-  pm::Particle<CompensatedPositions> pair;
-  pair.set_position({midpoint, midpoint, 0});
-  CHECK(same_bits(pair.position_relative_to(camera), wanted));
-  pm::ParticleSystem<CompensatedPositions> pairs(1);
-  pairs.spawn(Vector3<double>{midpoint, midpoint, 0}, {});
-  CHECK(same_bits(pairs.position_relative_to(0, camera), wanted));
+  const auto check = [&]<class S>() {  // a particle and a system of each wide precision
+    pm::Particle<S> particle;
+    particle.set_position({midpoint, midpoint, 0});
+    CHECK(same_bits(particle.position_relative_to(camera), wanted));
+    pm::ParticleSystem<S> system(1);
+    system.spawn(Vector3<double>{midpoint, midpoint, 0}, {});
+    CHECK(same_bits(system.position_relative_to(0, camera), wanted));
+  };
+  check.template operator()<DoublePositions>();
+  check.template operator()<CompensatedPositions>();
 }
 
 TEST_CASE_TEMPLATE("render-relative: the exact offset rounded once to float, against long double",
