@@ -3,8 +3,8 @@
 // its public API.
 //
 // Owns: the system's data (the block of arrays, the uniform damping and acceleration, the
-// handle table, the walk direction and the removal pass under way), its copy, move and swap; capacity
-// and growth; appending and swap-removing a particle (with its handle); reading and writing
+// handle table, the walk direction and the removal pass under way), its copy, move and swap;
+// capacity and growth; appending and swap-removing a particle (with its handle); reading and writing
 // a particle's position in the configuration's precision (precision.hpp), and its previous
 // position (features::Interpolation); the user columns at spawn; the walk of a step and the
 // expiry pass (with and without a callback); the copy-out of positions into a caller's

@@ -77,12 +77,14 @@ constexpr void apply(const G& generator, B& bodies, typename B::real duration) {
 /// `apply(drag, SoaBodies<float>{...}, t)`): the forces land in the storage it refers to.
 template <class G, BodyView B>
   requires(!std::is_lvalue_reference_v<B>)
-constexpr void update_force(G& generator, B&& body, typename std::remove_cvref_t<B>::real duration) {
+constexpr void update_force(G& generator, B&& body,
+                            typename std::remove_cvref_t<B>::real duration) {
   update_force(generator, body, duration);
 }
 template <class G, BodyView B>
   requires(!std::is_lvalue_reference_v<B>)
-constexpr void apply(const G& generator, B&& bodies, typename std::remove_cvref_t<B>::real duration) {
+constexpr void apply(const G& generator, B&& bodies,
+                     typename std::remove_cvref_t<B>::real duration) {
   apply(generator, bodies, duration);
 }
 /// A temporary particle or system would take the force and be gone with it: one sentence.

@@ -391,8 +391,9 @@ constexpr void apply_links(const BasicLinkSprings<typename B::real, IsBungee>& s
 /// storage it refers to.
 template <class B, bool IsBungee>
   requires(BodyView<B> && !std::is_lvalue_reference_v<B> && Bodies<std::remove_cvref_t<B>>)
-constexpr void apply_links(const BasicLinkSprings<typename std::remove_cvref_t<B>::real, IsBungee>& springs,
-                           std::span<const Link> links, B&& bodies) {
+constexpr void apply_links(
+    const BasicLinkSprings<typename std::remove_cvref_t<B>::real, IsBungee>& springs,
+    std::span<const Link> links, B&& bodies) {
   apply_links(springs, links, bodies);
 }
 
