@@ -42,8 +42,8 @@ struct OscillatorState {
 /// overflows for large t: e^(-gamma t) cosh(lambda t) = (e^(-(gamma - lambda) t) +
 /// e^(-(gamma + lambda) t)) / 2 with gamma - lambda = w0^2 / (gamma + lambda) (no
 /// cancellation), and sinh(lambda t) / lambda through expm1 when lambda t is small. No NaN for
-/// finite input and any t >= 0 while w0^2 |x0|, gamma |x0| and gamma |v0| are below the
-/// largest R.
+/// finite input and any t >= 0 while w0^2 |x0|, gamma |x0|, gamma |v0| and the phase w0 t are
+/// below the largest R (a phase beyond it, 3e38 radians in float, has no digits left).
 template <Real R>
 constexpr OscillatorState<R> damped_oscillator(R w0_squared, R gamma, const Vector3<R>& x0,
                                                const Vector3<R>& v0, R t) noexcept {
