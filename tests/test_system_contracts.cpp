@@ -239,18 +239,35 @@ TEST_CASE("a removal pass refuses steps and removals from its callback, and outl
   CHECK(culled.position(*culled.find(last)).x == 2.0f);
   CHECK(culled.position(*culled.find(last)).y == 0.0f);  // not stepped (its velocity is 2 m/s)
 
-  // A callback or predicate that replaces the whole system (assignment: not a removal the
-  // pass can refuse) leaves it as assigned, with nothing removed out of range.
+  // A callback or predicate that replaces the particles whole (assignment: not a removal the
+  // pass can refuse) ends the pass: the system stays as assigned, even when what it was given
+  // would have been removed (here: particles whose lifetime is over, and a predicate that
+  // says yes to everything).
+  Game expired_already;
+  for (int i = 0; i < 4; ++i) expired_already.spawn({float(i), 0, 0}, {});
+  expired_already.step(0.02f);  // ages 0.02, lifetimes infinite
+  for (std::size_t i = 0; i < 4; ++i) expired_already.set_lifetime(i, 0.01f);  // over
   Game reset = three_particles<Game>();
   reset.set_lifetime(2, 0.01f);
-  reset.step(0.02f, [&](std::size_t) { reset = Game(); });
-  CHECK(reset.empty());
+  std::size_t callbacks = 0;
+  reset.step(0.02f, [&](std::size_t) {
+    if (callbacks++ == 0) reset = expired_already;
+  });
+  CHECK(callbacks == 1);
+  CHECK(reset.size() == 4);
   Game emptied = three_particles<Game>();
+  bool assigned = false;
   CHECK(emptied.kill_if([&](std::size_t) {
-    emptied = Game();
+    if (!assigned) emptied = three_particles<Game>();
+    assigned = true;
     return true;
   }) == 0);
-  CHECK(emptied.empty());
+  CHECK(emptied.size() == 3);
+  // A predicate's result need only be testable as a bool (an optional, a pointer).
+  CHECK(emptied.kill_if([&](std::size_t i) {
+    return emptied.position(i).x == 1.0f ? std::optional<int>(1) : std::nullopt;
+  }) == 1);
+  CHECK(emptied.size() == 2);
 }
 
 TEST_CASE("spawn_burst names the count it refuses") {

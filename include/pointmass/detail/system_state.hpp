@@ -89,7 +89,9 @@ class SystemState {
         damping_(other.damping_),
         acceleration_(other.acceleration_),
         handles_(std::move(other.handles_)),
-        retention_duration_(other.retention_duration_) {}
+        retention_duration_(other.retention_duration_) {
+    ++other.replacements_;  // its particles left with the move
+  }
   SystemState& operator=(const SystemState&) = delete;  // the system assigns by swap
   SystemState& operator=(SystemState&&) = delete;
   ~SystemState() = default;
@@ -101,11 +103,16 @@ class SystemState {
     std::swap(acceleration_, other.acceleration_);
     std::swap(handles_, other.handles_);
     std::swap(retention_duration_, other.retention_duration_);
+    ++replacements_;
+    ++other.replacements_;
   }
 
   Block block_;
   bool backward_ = false;  // the next step walks backwards (see Kernel::alternates)
   RemovalPass removing_ = RemovalPass::none;  // inside a pass that removes particles
+  // Counts the times the particles were replaced whole (swap, and so assignment; moved from),
+  // so that a removal pass whose callback did so ends there.
+  std::uint32_t replacements_ = 0;
   [[no_unique_address]] damping_state damping_{};
   Vector3<R> acceleration_{};
   [[no_unique_address]] Table handles_{};
@@ -270,19 +277,21 @@ class SystemState {
     set_size(0);
   }
   // kill_if: the predicate runs inside RemovalPass::predicate, where removals and steps are
-  // refused; should it have changed the particles some other way (assigned or swapped the
-  // system), a particle is removed only if its index is still live.
+  // refused; should it have replaced the particles whole (assigned, swapped or moved the
+  // system), the pass ends there.
   template <class Predicate>
   std::size_t remove_if(Predicate& predicate) {
     std::size_t removed = 0;
     std::size_t i = 0;
     while (i < size()) {
       bool remove_it = false;
+      const std::uint32_t replacements = replacements_;
       {
         const PassScope scope(removing_, RemovalPass::predicate);
-        remove_it = predicate(std::as_const(i));
+        remove_it = static_cast<bool>(predicate(std::as_const(i)));
       }
-      if (remove_it && i < size()) {
+      if (replacements_ != replacements) break;
+      if (remove_it) {
         remove(i);
         ++removed;
       } else {
@@ -448,13 +457,14 @@ class SystemState {
         }
         if (expired(age[i], lifetime[i])) {
           if constexpr (!std::is_same_v<std::remove_cvref_t<OnExpire>, NoCallback>) {
+            const std::uint32_t replacements = replacements_;
             {
               const PassScope scope(removing_, RemovalPass::expiry);
               on_expire(std::as_const(i));
             }
-            // The callback may only spawn; should it have changed the particles some other
-            // way (assigned or swapped the system), only a live, expired particle goes.
-            if (!(i < size() && expired(arrays().age[i], arrays().lifetime[i]))) continue;
+            // The callback may only spawn (which keeps i); should it have replaced the
+            // particles whole (assigned, swapped or moved the system), the pass ends there.
+            if (replacements_ != replacements) return;
           }
           remove(i);
         } else {
