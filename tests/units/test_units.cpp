@@ -57,6 +57,22 @@ void check_same_trajectories(R frame, int steps) {
   }
 }
 
+TEST_CASE_TEMPLATE("scenes::launch starts a particle with wide positions, plain and SI", S,
+                   pm::Precision<float, double>, pm::Precision<float, pm::Compensated<float>>) {
+  const auto& shot = pm::scenes::ballistic_shots<float>[1];
+  pm::Particle<S> plain;
+  pm::units::Particle<S> with_units;
+  pm::scenes::launch(plain, shot);
+  pm::scenes::launch(with_units, shot);
+  const auto& origin = pm::scenes::ballistic_origin<float>;
+  const Vector3<double> start{double(origin.x), double(origin.y), double(origin.z)};
+  CHECK(plain.position() == start);
+  CHECK(numbers(with_units.position()) == start);
+  CHECK(plain.velocity() == shot.velocity);
+  CHECK(numbers(with_units.velocity()) == shot.velocity);
+  CHECK(plain.mass() == shot.mass);
+}
+
 template <class R, class D>
 void check_all_positions(R frame, int steps) {
   check_same_trajectories<R, D, pm::position::Euler>(frame, steps);

@@ -7,6 +7,8 @@
 
 #include <array>
 #include <string_view>
+#include <type_traits>
+#include <utility>
 
 #include "../real.hpp"
 #include "../vector3.hpp"
@@ -42,13 +44,14 @@ inline constexpr std::array<BallisticShot<R>, 4> ballistic_shots{{
 }};
 
 namespace detail {
-/// The scene's vector v as a Vector3 of the particle's quantity T (through its QuantitySet).
+/// The scene's vector v as a Vector3 of the particle's quantity T (through its QuantitySet),
+/// converted to T's own number type (the position's may be wider than the arithmetic's).
 template <class T, class Particle, Real R>
 constexpr Vector3<T> as_quantities(const Vector3<R>& v) {
   using Q = typename Particle::quantities;
-  using real = typename Particle::real;
-  return {Q::template make<T>(real(v.x)), Q::template make<T>(real(v.y)),
-          Q::template make<T>(real(v.z))};
+  using number = std::remove_cvref_t<decltype(Q::raw(std::declval<T>()))>;
+  return {Q::template make<T>(number(v.x)), Q::template make<T>(number(v.y)),
+          Q::template make<T>(number(v.z))};
 }
 }  // namespace detail
 
@@ -57,7 +60,8 @@ constexpr Vector3<T> as_quantities(const Vector3<R>& v) {
 template <class Particle, Real R>
 constexpr void launch(Particle& particle, const BallisticShot<R>& shot) {
   using P = Particle;
-  particle.set_position(detail::as_quantities<typename P::length_type, P>(ballistic_origin<R>));
+  particle.set_position(
+      detail::as_quantities<typename P::position_type, P>(ballistic_origin<R>));
   particle.set_velocity(detail::as_quantities<typename P::velocity_type, P>(shot.velocity));
   particle.set_acceleration(
       detail::as_quantities<typename P::acceleration_type, P>(shot.acceleration));
