@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -84,6 +85,11 @@ TEST_CASE_TEMPLATE("spring between particles pulls them together, equal and oppo
   // Extension 3, stiffness 3: 9 N along the line.
   CHECK(close(a.force_accumulator(), Vector3<R>{R(0), R(9), R(0)}, R(2)));
   CHECK(close(b.force_accumulator(), Vector3<R>{R(0), R(-9), R(0)}, R(2)));
+  // A wrapper that refers to the other body (std::ref, std::cref) is not a temporary body.
+  forces::Spring<Particle<R>> by_reference(std::ref(b), R(3), R(1));
+  CHECK(by_reference.other() == &b);
+  by_reference.set_other(std::cref(a));
+  CHECK(by_reference.other() == &a);
 }
 
 TEST_CASE_TEMPLATE("bungee pulls when stretched and never pushes", R, float, double) {

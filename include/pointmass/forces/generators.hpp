@@ -214,10 +214,13 @@ using AnchoredBungee = BasicAnchoredSpring<R, true>;
 /// a relative_to view made in the call) is refused at compile time with one sentence.
 template <class Body, bool IsBungee = false>
 class BasicSpring : public SpringParameters<typename Body::real, IsBungee> {
-  /// An argument that would bind `const Body&` to a temporary.
+  /// A temporary body (a Body, or a class derived from it, as an rvalue): `const Body&` would
+  /// bind to it. A wrapper that refers to a body elsewhere (std::ref) is not one.
   template <class Other>
   static constexpr bool temporary_other =
-      !std::is_lvalue_reference_v<Other> && std::is_convertible_v<Other&&, const Body&>;
+      !std::is_lvalue_reference_v<Other> &&
+      (std::is_same_v<std::remove_cvref_t<Other>, Body> ||
+       std::is_base_of_v<Body, std::remove_cvref_t<Other>>);
 
  public:
   using real = typename Body::real;
