@@ -333,6 +333,10 @@ TEST_CASE("the game features' arguments: removals in an expiry callback, buffers
     CHECK(invalid_argument_of([&] {
             system.copy_interpolated_positions(alpha, std::span<float>(buffer));
           }).find("must be in [0, 1]") != std::string::npos);
+    // The free interpolate, for a lone Particle's loop, checks it the same way.
+    CHECK(invalid_argument_of([&] {
+            (void)interpolate(Vector3<float>{1, 2, 3}, Vector3<float>{3, 4, 5}, alpha);
+          }).find("interpolate: argument 'alpha'") != std::string::npos);
   }
   CHECK(buffer == std::vector<float>(5, -1.0f));
   CHECK(invalid_argument_of([&] { (void)system.handle(7); }).find("handle: argument 'index' = 7") !=

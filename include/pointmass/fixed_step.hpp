@@ -30,11 +30,16 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// The position at the fraction alpha in [0, 1] between `previous` and `current`: alpha 0
 /// gives previous and 1 gives current, bit for bit; between them previous + (current -
-/// previous) alpha.
+/// previous) alpha. An alpha outside [0, 1] (or NaN) is a contract violation, checked when
+/// POINTMASS_CHECKS is on (as ParticleSystem::interpolated_position checks it): reported, and
+/// `current` is returned.
 template <Real R, class A>
 constexpr Vector3<R> interpolate(const Vector3<R>& previous, const Vector3<R>& current,
-                                 A alpha) noexcept {
+                                 A alpha) noexcept(!POINTMASS_HOST_CHECKS) {
   const R fraction = static_cast<R>(alpha);
+#if POINTMASS_HOST_CHECKS
+  if (!detail::check_fraction("interpolate", "alpha", fraction)) return current;
+#endif
   if (real_equal(fraction, R(0))) return previous;
   if (real_equal(fraction, R(1))) return current;
   return previous + (current - previous) * fraction;
