@@ -177,6 +177,12 @@ struct KokkosFillHoles {
 template <class System, class MemorySpace = Kokkos::DefaultExecutionSpace::memory_space>
 class KokkosSystem {
   using Layout = detail::layout_of_t<System>;
+  // The handle table lives beside the host's arrays: a device that removes particles could
+  // not keep it, and copy_to would leave it naming other particles.
+  static_assert(!Layout::has_handles,
+                "KokkosSystem: features::Handles is not supported on a device (the handle "
+                "table stays on the host); step a system with Handles on the host, or "
+                "without Handles on the device");
   using Block = detail::SoaBlock<Layout>;
   template <class T>
   using Unmanaged = Kokkos::View<T*, MemorySpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>>;
