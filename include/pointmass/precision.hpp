@@ -170,11 +170,23 @@ POINTMASS_HD constexpr T round_once(W z, W r) noexcept {
     return static_cast<T>(z);
   } else {
     const T y = static_cast<T>(z);
-    if (real_equal(r, W(0)) || !real_isfinite(y)) return y;
+    if (real_equal(r, W(0))) return y;
+    using Bits = typename FloatBits<T>::type;
+    if (!real_isfinite(y)) {
+      // z overflowed T: only a z exactly halfway between the largest T and the next power of
+      // two, with x short of it (r pointing back towards zero), rounds to the largest T.
+      const T largest = std::numeric_limits<T>::max();
+      const T below =
+          __builtin_bit_cast(T, static_cast<Bits>(__builtin_bit_cast(Bits, largest) - 1u));
+      const W midpoint = static_cast<W>(largest) +
+                         (static_cast<W>(largest) - static_cast<W>(below)) / W(2);
+      if (real_equal(z, midpoint) && r < W(0)) return largest;
+      if (real_equal(z, -midpoint) && r > W(0)) return -largest;
+      return y;
+    }
     const W d = z - static_cast<W>(y);  // exact: z and y are within half an ulp of T
     if (real_equal(d, W(0))) return y;
     // y's neighbour on z's side, by its bits (T is float or double where W is wider).
-    using Bits = typename FloatBits<T>::type;
     const Bits bits = __builtin_bit_cast(Bits, y);
     const Bits smallest_negative = static_cast<Bits>(FloatBits<T>::magnitude_mask + 2u);
     const bool outward = (d > W(0)) == (y > T(0));

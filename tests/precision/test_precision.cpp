@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <random>
 #include <stdexcept>
@@ -391,6 +392,24 @@ TEST_CASE("render-relative: rounded once, also where the offset rounded to doubl
   };
   check.template operator()<DoublePositions>();
   check.template operator()<CompensatedPositions>();
+}
+
+TEST_CASE("render-relative: rounded once at the edge of the range too") {
+  // Halfway between the largest float and 2^128 is M = 2^128 - 2^103, a double; an offset a
+  // little short of it (the camera at +1e-30) is below the midpoint and rounds to the largest
+  // float, where M alone rounds to even, infinity.
+  const double M = 0x1p128 - 0x1p103;
+  pm::Particle<DoublePositions> far;
+  far.set_position({M, -M, 0});
+  const Vector3<float> offset = far.position_relative_to({1e-30, -1e-30, 0});
+  CHECK(offset.x == std::numeric_limits<float>::max());
+  CHECK(offset.y == -std::numeric_limits<float>::max());
+  // The same for double from long double, where long double is wider.
+  if constexpr (std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits) {
+    const long double Md = 0x1p1024L - 0x1p970L;
+    CHECK(pm::detail::PositionStorage<long double>::relative<double>(Md, 1e-300L) ==
+          std::numeric_limits<double>::max());
+  }
 }
 
 TEST_CASE_TEMPLATE("render-relative: the exact offset rounded once to float, against long double",
