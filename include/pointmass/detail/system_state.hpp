@@ -4,11 +4,11 @@
 //
 // Owns: the system's data (the block of arrays, the uniform damping and acceleration, the
 // handle table, the walk direction and the removal pass under way), its copy, move and swap;
-// capacity and growth; appending and swap-removing a particle (with its handle); reading and writing
-// a particle's position in the configuration's precision (precision.hpp), and its previous
-// position (features::Interpolation); the user columns at spawn; the walk of a step and the
-// expiry pass (with and without a callback); the copy-out of positions into a caller's
-// buffer. particle_system.hpp is the public face of this class and says what each call
+// capacity and growth; appending and swap-removing a particle (with its handle); reading and
+// writing a particle's position in the configuration's precision (precision.hpp), and its
+// previous position (features::Interpolation); the user columns at spawn; the walk of a step
+// and the removal passes (expiry, with and without a callback, and kill_if); the copy-out of
+// positions into a caller's buffer. particle_system.hpp is the public face of this class and says what each call
 // means; here is how.
 //
 // Must not include: particle_system.hpp, parallel.hpp (this is below the public API).
