@@ -110,9 +110,10 @@ class SystemState {
   Block block_;
   bool backward_ = false;  // the next step walks backwards (see Kernel::alternates)
   RemovalPass removing_ = RemovalPass::none;  // inside a pass that removes particles
-  // Counts the times the particles were replaced whole (swap, and so assignment; moved from),
-  // so that a removal pass whose callback did so ends there.
-  std::uint32_t replacements_ = 0;
+  // Counts (modulo 2^16: it fits beside the two flags) the times the particles were replaced
+  // whole (swap, and so assignment; moved from), so that a removal pass whose callback did so
+  // ends there.
+  std::uint16_t replacements_ = 0;
   [[no_unique_address]] damping_state damping_{};
   Vector3<R> acceleration_{};
   [[no_unique_address]] Table handles_{};
@@ -285,7 +286,7 @@ class SystemState {
     std::size_t i = 0;
     while (i < size()) {
       bool remove_it = false;
-      const std::uint32_t replacements = replacements_;
+      const std::uint16_t replacements = replacements_;
       {
         const PassScope scope(removing_, RemovalPass::predicate);
         remove_it = static_cast<bool>(predicate(std::as_const(i)));
@@ -457,7 +458,7 @@ class SystemState {
         }
         if (expired(age[i], lifetime[i])) {
           if constexpr (!std::is_same_v<std::remove_cvref_t<OnExpire>, NoCallback>) {
-            const std::uint32_t replacements = replacements_;
+            const std::uint16_t replacements = replacements_;
             {
               const PassScope scope(removing_, RemovalPass::expiry);
               on_expire(std::as_const(i));
