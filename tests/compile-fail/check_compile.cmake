@@ -1,15 +1,24 @@
 # SPDX-License-Identifier: BSL-1.0
 # Compiles one snippet (cmake -P): -DCOMPILER, -DSOURCE, -DINCLUDE_DIRS (separated by |),
-# -DEXPECT=pass|fail. With EXPECT=fail the compilation must fail and its output must contain
+# -DSYSTEM_INCLUDE_DIRS (optional, the same), -DEXPECT=pass|fail. With EXPECT=fail the compilation must fail and its output must contain
 # the text of one of the snippet's "// expected-error: TEXT" lines (one line per compiler's
 # wording where g++ and clang differ).
 include("${CMAKE_CURRENT_LIST_DIR}/../../cmake/PointmassScripts.cmake")
 pointmass_include_flags(include_flags "${INCLUDE_DIRS}")
+# -DSYSTEM_INCLUDE_DIRS (optional, separated by |): a library's headers (Kokkos'), searched as
+# system headers, so that their own warnings are not the project's errors.
+set(system_flags)
+string(REPLACE "|" ";" system_dirs "${SYSTEM_INCLUDE_DIRS}")
+foreach(dir IN LISTS system_dirs)
+  if(dir)
+    list(APPEND system_flags -isystem "${dir}")
+  endif()
+endforeach()
 
 execute_process(
   COMMAND "${COMPILER}" -std=c++20 -fsyntax-only
           -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wdouble-promotion -Werror
-          ${include_flags} "${SOURCE}"
+          ${include_flags} ${system_flags} "${SOURCE}"
   RESULT_VARIABLE result
   OUTPUT_VARIABLE output
   ERROR_VARIABLE output)
