@@ -2,9 +2,10 @@
 # SPDX-License-Identifier: BSL-1.0
 # The whole test suite, as CI runs it: installs what is missing, then builds and runs every
 # test with g++ (debug, contract checks on), with clang (release), and under AddressSanitizer
-# and UndefinedBehaviorSanitizer (the behaviour tests; the tests of the build itself, and the
-# Kokkos step's bit-for-bit comparisons beyond the default damping policy, run in the other
-# two). All warnings are errors.
+# and UndefinedBehaviorSanitizer (the behaviour tests; the tests of the build itself run in the
+# other two). The Kokkos step's bit-for-bit comparisons beyond the default damping policy run
+# in the clang configuration, where the loops they compare are optimised and vectorised. All
+# warnings are errors.
 #   scripts/test.sh            everything
 #   scripts/test.sh gcc        one configuration: gcc, clang or sanitize
 set -euo pipefail
@@ -18,7 +19,10 @@ for configuration in "${configurations[@]}"; do
   dir="$POINTMASS_ROOT/build/test-$configuration"
   echo "== $configuration: configure and build in $dir"
   case "$configuration" in
-    gcc) configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=Debug ;;
+    gcc)
+      configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=Debug \
+        -DPOINTMASS_TEST_EVERY_KOKKOS_PAIR=OFF
+      ;;
     clang) configure_and_build "$dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release ;;
     sanitize)
       configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=Debug \

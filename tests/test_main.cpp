@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// The doctest main for the core suite.
+// doctest's main, compiled once (pointmass_doctest_main) for every suite that builds doctest
+// with its default settings.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
