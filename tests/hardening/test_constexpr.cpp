@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 // A particle stepped at compile time. damping::None and damping::PerFrame call no maths
 // function, so a whole trajectory is a constant expression with every position policy
-// (position::Exact too, paired with None: its series are plain arithmetic); PerSecond,
-// AccelerateThenDamp and Exact call pow, log or expm1, which are not constexpr in C++20.
+// (position::Exact too, paired with None: its series are plain arithmetic). PerSecond and
+// Exact step with the library's own exponential, constexpr too, but setting their damping
+// takes a logarithm, which is not constexpr in C++20 (they step at compile time with the
+// default d = 1); AccelerateThenDamp calls the C library's pow, never constexpr.
 //
 // The static_asserts check physics, not recorded numbers: with dyadic inputs (powers of two)
 // every operation is exact in float and in double, so the discrete scheme's closed forms hold
@@ -101,6 +103,34 @@ constexpr bool immovable_stays() {
 }
 static_assert(immovable_stays<float>());
 static_assert(immovable_stays<double>());
+
+// PerSecond and Exact step at compile time too: d^t is the library's own exponential
+// (detail/exponential.hpp), constexpr. Setting a damping value is not constexpr (its
+// logarithm), so these particles keep the default, d = 1: None's trajectory, bit for bit,
+// through the whole exponential (e^0 is computed, not skipped).
+template <class R, class D, class P>
+constexpr bool default_damping_steps_as_none() {
+  auto start = [](auto particle) {
+    particle.set_position(origin<R>);
+    particle.set_velocity(launch<R>);
+    particle.set_acceleration(gravity<R>);
+    particle.set_mass(R(2));
+    return particle;
+  };
+  auto damped = start(Particle<R, D, P>{});
+  auto undamped = start(Particle<R, damping::None, P>{});
+  for (int k = 0; k < 64; ++k) {
+    damped.add_force({R(0), R(1), R(0)});
+    undamped.add_force({R(0), R(1), R(0)});
+    damped.integrate(R(1) / R(64));
+    undamped.integrate(R(1) / R(64));
+  }
+  return damped.position() == undamped.position() && damped.velocity() == undamped.velocity();
+}
+static_assert(default_damping_steps_as_none<float, damping::PerSecond, position::Kinematic>());
+static_assert(default_damping_steps_as_none<double, damping::PerSecond, position::Euler>());
+static_assert(default_damping_steps_as_none<float, damping::Exact, position::Exact>());
+static_assert(default_damping_steps_as_none<double, damping::Exact, position::Exact>());
 
 template <class R, class D, class P>
 constexpr Particle<R, D, P> rounding_shot(R t) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// Fuzz target: drives Particle (every damping x position pair), ParticleSystem (ten feature
+// Fuzz target: drives Particle (every damping x position pair), ParticleSystem (eleven feature
 // sets and policy pairs: operation sequences checked against a reference model, see
 // "ParticleSystem" below) and the force generators, float and double, through the public
 // API with arbitrary bytes.
