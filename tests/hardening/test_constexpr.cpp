@@ -129,6 +129,7 @@ constexpr bool default_damping_steps_as_none() {
 }
 static_assert(default_damping_steps_as_none<float, damping::PerSecond, position::Kinematic>());
 static_assert(default_damping_steps_as_none<double, damping::PerSecond, position::Euler>());
+static_assert(default_damping_steps_as_none<float, damping::PerSecond, position::SemiImplicit>());
 static_assert(default_damping_steps_as_none<float, damping::Exact, position::Exact>());
 static_assert(default_damping_steps_as_none<double, damping::Exact, position::Exact>());
 
