@@ -21,12 +21,15 @@ namespace {
 using namespace pointmass;
 using pointmass::test::matches;
 using pointmass::test::random_vector;
+using pointmass::test::same_bits;
 
 enum class Walk { by_step_alternating, by_step_forwards, backward_only };
 
 // Steps a system of `count` particles and the equivalent Particles `steps` times, by `step`
 // or by step_range_backward alone; checks after each step that they match and, with `step`,
-// that the walk's direction alternates (or not).
+// that the walk's direction alternates (or not). With forces, every particle has its own mass
+// and a new force of its own every step; with lifetimes, its own lifetime, so that particles
+// expire over the steps: each particle's state, age and lifetime must stay its own.
 template <class R, class D, class P, class... Features>
 void step_side_by_side(std::size_t count, int steps, Walk walk) {
   using System = ParticleSystem<R, D, P, Features...>;
@@ -40,6 +43,9 @@ void step_side_by_side(std::size_t count, int steps, Walk walk) {
   }
   std::vector<Particle<R, D, P>> particles(count);
   std::uniform_real_distribution<R> damping(R(0.1), R(1));
+  std::uniform_real_distribution<R> mass(R(0.5), R(4));
+  // Lifetimes from 0.01 s (the first step expires some) to beyond the run (some survive it).
+  std::uniform_real_distribution<R> lifetime(R(0.01), R(steps) / R(50));
   std::size_t rejected = 0;
   for (auto& particle : particles) {
     particle.set_position(random_vector(engine, R(100)));
@@ -54,13 +60,30 @@ void step_side_by_side(std::size_t count, int steps, Walk walk) {
     } else if constexpr (System::stores_damping) {
       particle.set_damping(R(0.6));
     }
+    if constexpr (System::has_forces) particle.set_mass(mass(engine));
     rejected += system.spawn(particle) == System::npos ? 1 : 0;
   }
   REQUIRE(rejected == 0);
   REQUIRE(matches(system, particles));
+  // The lifetimes of particles[k] and of the system's particle k (until a step expires some).
+  std::vector<R> lifetimes(count, real_infinity<R>);
+  if constexpr (System::has_lifetime) {
+    for (std::size_t i = 0; i < count; ++i) {
+      lifetimes[i] = lifetime(engine);
+      system.set_lifetime(i, lifetimes[i]);
+    }
+  }
+  R age = R(0);  // every particle's: they were spawned together
   for (int step = 0; step < steps; ++step) {
     CAPTURE(step);
     const R t = R(1) / R(60 + step);
+    if constexpr (System::has_forces) {
+      for (std::size_t i = 0; i < system.size(); ++i) {
+        const Vector3<R> force = random_vector(engine, R(5));
+        system.add_force(i, force);
+        particles[i].add_force(force);
+      }
+    }
     if (walk == Walk::backward_only) {
       System::step_range_backward(system.arrays(), 0, system.size(),
                                   system.step_parameters(t));
@@ -70,7 +93,39 @@ void step_side_by_side(std::size_t count, int steps, Walk walk) {
       system.step(t);
     }
     for (auto& particle : particles) particle.integrate(t);
+    if constexpr (System::has_lifetime) {
+      // Expiry reorders the survivors: find each of the system's particles by its position's
+      // bits among the Particles, and check it is one that should survive, in full.
+      age += t;
+      std::vector<Particle<R, D, P>> survivors;
+      std::vector<R> survivors_lifetimes;
+      std::vector<bool> taken(particles.size(), false);
+      for (std::size_t i = 0; i < system.size(); ++i) {
+        CAPTURE(i);
+        std::size_t k = 0;
+        while (k < particles.size() && !same_bits(system.position(i), particles[k].position())) {
+          ++k;
+        }
+        REQUIRE(k < particles.size());
+        REQUIRE_FALSE(taken[k]);
+        taken[k] = true;
+        CHECK(same_bits(system.lifetime(i), lifetimes[k]));
+        CHECK(same_bits(system.age(i), age));
+        CHECK(age < lifetimes[k]);
+        survivors.push_back(particles[k]);
+        survivors_lifetimes.push_back(lifetimes[k]);
+      }
+      std::size_t expected_survivors = 0;
+      for (const R l : lifetimes) expected_survivors += age < l ? 1 : 0;
+      REQUIRE(system.size() == expected_survivors);
+      particles = std::move(survivors);
+      lifetimes = std::move(survivors_lifetimes);
+    }
     REQUIRE(matches(system, particles));
+  }
+  if constexpr (System::has_lifetime) {
+    CHECK(system.size() > 0);      // some lived through the run,
+    CHECK(system.size() < count);  // and some expired in it
   }
 }
 
