@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
-// A system whose growth fails to allocate is left as it was: the block and the handle table
-// grow together or not at all (this executable replaces the aligned operator new, which the
-// particle block uses, with one that can be told to fail).
+// Allocation. A system whose growth fails to allocate is left as it was: the block and the
+// handle table grow together or not at all. A step allocates nothing, whatever it does
+// (expiry, callbacks, handles, interpolation). This executable replaces operator new, plain
+// and aligned (the particle block's), with ones that count and can be told to fail.
 #include <doctest/doctest.h>
 
 #include <cstddef>
@@ -12,9 +13,19 @@
 
 namespace {
 bool fail_aligned_allocations = false;
+std::size_t allocations = 0;  // every operator new, plain and aligned
 }  // namespace
 
+void* operator new(std::size_t size) {
+  ++allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
 void* operator new(std::size_t size, std::align_val_t alignment) {
+  ++allocations;
   if (fail_aligned_allocations) throw std::bad_alloc();
   const auto a = static_cast<std::size_t>(alignment);
   if (void* p = std::aligned_alloc(a, (size + a - 1) / a * a)) return p;
@@ -43,4 +54,77 @@ TEST_CASE("a growth that fails to allocate changes nothing, handles included") {
   // And it grows when memory is there again.
   system.spawn({99.0f, 0.0f, 0.0f}, {});
   CHECK(system.size() == 17);
+}
+
+namespace {
+
+// Spawns `count` particles into a system reserved for them, each with what its features
+// store (a lifetime from 0.02 s to 0.5 s, so the steps expire some), then counts the
+// allocations of `steps` steps of 1/60 s, with an expiry callback when asked.
+template <class System>
+std::size_t allocations_of_steps(std::size_t count, int steps, bool with_callback) {
+  using R = typename System::real;
+  System system(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const R x = R(i);
+    const std::size_t index = system.spawn({x, R(10), R(0)}, {R(1), R(2), R(0)});
+    if constexpr (System::has_lifetime) {
+      system.set_lifetime(index, R(0.02) + R(0.48) * R(i % 17) / R(16));
+    }
+    if constexpr (System::has_forces) system.set_mass(index, R(1) + R(i % 3));
+  }
+  std::size_t expired = 0;
+  const std::size_t before = allocations;
+  for (int step = 0; step < steps; ++step) {
+    if constexpr (System::has_forces) {
+      for (std::size_t i = 0; i < system.size(); ++i) system.add_force(i, {R(0), R(1), R(0)});
+    }
+    if constexpr (System::has_lifetime) {
+      if (with_callback) {
+        system.step(R(1) / R(60), [&](auto&&...) { ++expired; });
+        continue;
+      }
+    }
+    system.step(R(1) / R(60));
+  }
+  const std::size_t made = allocations - before;
+  if constexpr (System::has_lifetime) {
+    CHECK(system.size() < count);  // the steps expired particles: expiry is covered
+    if (with_callback) CHECK(expired > 0);
+  }
+  return made;
+}
+
+}  // namespace
+
+TEST_CASE("a step allocates nothing: expiry, callbacks, handles and interpolation included") {
+  namespace pm = pointmass;
+  namespace f = pm::features;
+  using Sparks = pm::ParticleSystem<float>;
+  using Featured = pm::ParticleSystem<float, pm::damping::Exact, pm::position::Exact,
+                                      f::PerParticleDamping, f::PerParticleAcceleration,
+                                      f::ForceAccumulator, f::Lifetime>;
+  using Game = pm::ParticleSystem<double, pm::damping::PerSecond, pm::position::Euler,
+                                  f::Lifetime, f::Interpolation, f::Handles,
+                                  f::Column<int, float>>;
+  using Wide = pm::ParticleSystem<pm::Precision<float, double>, pm::damping::PerSecond,
+                                  pm::position::Kinematic, f::Lifetime>;
+  // Sizes on both sides of the alternating walk's lower bound (32 KiB of arrays).
+  for (const std::size_t count : {std::size_t{100}, std::size_t{3000}}) {
+    CAPTURE(count);
+    CHECK(allocations_of_steps<Sparks>(count, 30, false) == 0);
+    CHECK(allocations_of_steps<Featured>(count, 30, false) == 0);
+    CHECK(allocations_of_steps<Featured>(count, 30, true) == 0);
+    CHECK(allocations_of_steps<Game>(count, 30, true) == 0);
+    CHECK(allocations_of_steps<Wide>(count, 30, true) == 0);
+  }
+}
+
+TEST_CASE("the allocation count sees what it is meant to see") {
+  // The count is not vacuous: a growth beyond the reserved capacity is counted.
+  pointmass::ParticleSystem<float> system(4);
+  for (int i = 0; i < 4; ++i) system.spawn({}, {});
+  const std::size_t before = allocations;
+  system.spawn({}, {});
+  CHECK(allocations > before);
 }

@@ -253,7 +253,9 @@ TEST_CASE_TEMPLATE("lifetime in a large system: exactly the expired particles go
   }
 }
 
-TEST_CASE_TEMPLATE("capacity is reserved up front, a step allocates nothing, growth keeps data",
+// (That a step allocates nothing at all is counted by tests/hardening/test_allocation_failure.cpp,
+// which replaces operator new.)
+TEST_CASE_TEMPLATE("capacity is reserved up front, a step keeps the block, growth keeps data",
                    R, float, double) {
   ParticleSystem<R> system(64);
   std::mt19937 engine(1);
