@@ -146,6 +146,49 @@ TEST_CASE("the scenes hold the reference engine's shots") {
   CHECK(p.damping() == 0.99);
 }
 
+namespace {
+// Per-second damping that counts how often its per-step factors (the power function) run.
+struct CountingPerSecond {
+  template <Real R>
+  using State = damping::PerSecond::State<R>;
+  template <Real R>
+  using Factors = damping::Retention<R>;
+  static inline int factor_calls = 0;
+  template <Real R, class T>
+  static Factors<R> factors(const State<R>& state, const T& t) noexcept {
+    ++factor_calls;
+    return damping::PerSecond::factors(state, t);
+  }
+  template <class V, class A, class T, class R>
+  static constexpr V velocity(const V& v0, const A& a, const T& t, const Factors<R>& f) noexcept {
+    return damping::PerSecond::velocity(v0, a, t, f);
+  }
+};
+}  // namespace
+
+TEST_CASE("a fixed-step loop computes the damping factors once, and again only when needed") {
+  using Counted = Particle<float, CountingPerSecond>;
+  static_assert(Counted::caches_factors);
+  Counted particle;
+  particle.set_velocity({1.0f, 2.0f, 3.0f});
+  particle.set_damping(0.5f);
+  CountingPerSecond::factor_calls = 0;
+  for (int i = 0; i < 10; ++i) particle.integrate(1.0f / 60);
+  CHECK(CountingPerSecond::factor_calls == 1);  // ten steps of one length: one power
+  particle.integrate(1.0f / 30);
+  CHECK(CountingPerSecond::factor_calls == 2);  // a new length
+  particle.integrate(1.0f / 60);
+  CHECK(CountingPerSecond::factor_calls == 3);  // the old length again: one entry is kept
+  particle.set_damping(0.9f);
+  particle.integrate(1.0f / 60);
+  CHECK(CountingPerSecond::factor_calls == 4);  // a new damping, the same length
+  Counted copy = particle;
+  copy.integrate(1.0f / 60);
+  CHECK(CountingPerSecond::factor_calls == 4);  // a copy carries the kept factors
+  particle.integrate(0.0f);
+  CHECK(CountingPerSecond::factor_calls == 4);  // a zero step computes none
+}
+
 TEST_CASE_TEMPLATE("a repeated step length reuses the damping factors, a new length or damping does not",
                    D, damping::PerSecond, damping::AccelerateThenDamp, damping::Exact) {
   using R = float;
