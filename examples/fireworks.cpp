@@ -10,8 +10,9 @@
 // "Skip what a scene doesn't need": every particle of a type shares the type's damping, so
 // the scene keeps one ParticleSystem per type with uniform damping and uniform gravity:
 // d^t is computed once per type per step, not once per spark. Per spark it stores position,
-// velocity, age and fuse, the position before the last step (features::Interpolation) and
-// the spark's colour (a user column, moved with the spark whenever another burns out).
+// velocity, age and fuse, the position before the last step (features::Interpolation), the
+// spark's colour and its serial number (user columns, moved with the spark whenever another
+// burns out).
 //
 // A game's loop: physics at a fixed 60 Hz (FixedStep), rendering at whatever rate the frames
 // come (here an irregular, seeded sequence around 50 frames a second), each frame drawing the
@@ -21,8 +22,9 @@
 //
 // The random generator is seeded (--seed N), so a run is reproducible. Each second the
 // program prints the live sparks and the bursts; at the end it checks its own accounting
-// (every spark spawned is alive or has burnt out; every burnt-out fuse was within its type's
-// range; every child has its parent's colour) and prints "accounting: ok" or what went
+// (every spark spawned is alive or has burnt out; each spark that burns out still has the
+// fuse and colour it was spawned with, looked up by its serial number, so the columns moved
+// with it; every child has its parent's colour) and prints "accounting: ok" or what went
 // wrong (exit status 1).
 //
 //   fireworks [--seconds S] [--seed N] [--csv FILE]   (CSV: t,type,x,y,z,rgb every 0.25 s,
@@ -45,9 +47,12 @@ namespace {
 using namespace pointmass;
 using Number = float;  // the precision of the whole show
 struct ColourTag {};   // names the colour column
+struct SerialTag {};   // names the serial number column
 using Colour = std::uint32_t;  // 0xRRGGBB
+using Serial = std::uint32_t;  // the spark's place in the show's record of what it spawned
 using Sparks = ParticleSystem<Number, damping::PerSecond, position::Euler, features::Lifetime,
-                              features::Interpolation, features::Column<ColourTag, Colour>>;
+                              features::Interpolation, features::Column<ColourTag, Colour>,
+                              features::Column<SerialTag, Serial>>;
 
 struct Payload {
   int type;
@@ -85,7 +90,13 @@ Number uniform(std::mt19937& random, Number low, Number high) {
 }
 
 struct Show {
+  /// What a spark was spawned with, by serial number.
+  struct Record {
+    Number fuse;
+    Colour colour;
+  };
   std::array<Sparks, 9> sparks;
+  std::vector<Record> spawned_sparks;
   std::mt19937 random;
   long spawned = 0, burnt_out = 0, bursts = 0, bad_fuses = 0, wrong_colours = 0;
 
@@ -104,8 +115,11 @@ struct Show {
                                  uniform(random, rule.min_velocity.y, rule.max_velocity.y),
                                  uniform(random, rule.min_velocity.z, rule.max_velocity.z)};
     Sparks& system = sparks[static_cast<std::size_t>(type - 1)];
-    const std::size_t i = system.spawn(position, inherited + velocity, colour);
-    system.set_lifetime(i, uniform(random, rule.min_fuse, rule.max_fuse));
+    const Number fuse = uniform(random, rule.min_fuse, rule.max_fuse);
+    const auto serial = static_cast<Serial>(spawned_sparks.size());
+    const std::size_t i = system.spawn(position, inherited + velocity, colour, serial);
+    system.set_lifetime(i, fuse);
+    spawned_sparks.push_back({fuse, colour});
     ++spawned;
   }
 
@@ -128,7 +142,12 @@ struct Show {
       const Rule& rule = rules[t];
       system.step(dt, [&](std::size_t i) {  // spark i burns out: called once, before removal
         ++burnt_out;
-        if (system.lifetime(i) < rule.min_fuse || system.lifetime(i) > rule.max_fuse) ++bad_fuses;
+        const Record& record = spawned_sparks[system.column<SerialTag>(i)];
+        if (system.lifetime(i) != record.fuse || system.lifetime(i) < rule.min_fuse ||
+            system.lifetime(i) > rule.max_fuse) {
+          ++bad_fuses;
+        }
+        if (system.column<ColourTag>(i) != record.colour) ++wrong_colours;
         bursting.push_back({static_cast<int>(t + 1), system.position(i), system.velocity(i),
                             system.column<ColourTag>(i)});
       });
@@ -226,7 +245,8 @@ int main(int argc, char** argv) {
               show.live(), show.bursts);
   if (show.spawned != show.burnt_out + show.live() || show.bad_fuses != 0 ||
       show.wrong_colours != 0) {
-    std::printf("accounting: FAILED (%ld fuses out of range, %ld children in another colour)\n",
+    std::printf("accounting: FAILED (%ld sparks with another's fuse or one out of range, %ld "
+                "sparks or children in another colour)\n",
                 show.bad_fuses, show.wrong_colours);
     return 1;
   }
