@@ -116,7 +116,8 @@ TEST_CASE("the error bounds are not vacuous on any scene: a run twice as wrong f
         const double bound = convergence_bound(e.doubles[0], frame_times[0], h, order_v<D, P>);
         INFO("frame time 1/", 1 / h, " s: double error ", e.doubles[i], " m, bound ", bound,
              " m, float rounding term ", e.rounding[i], " m");
-        CHECK(e.doubles[i] >= bound / 4);
+        // (At the coarsest step the bound is made from this error itself: nothing to check.)
+        if (i > 0) CHECK(e.doubles[i] >= bound / 4);
         if (s.has_spring()) {
           CHECK(e.rounding[i] <= e.doubles[i] / 2);
         } else if (i == 0) {
