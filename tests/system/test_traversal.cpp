@@ -153,8 +153,8 @@ TEST_CASE_TEMPLATE("alternating walk with per-particle values, forces and lifeti
                                 Featured::backward_chunk / 2;
   REQUIRE(Featured::alternates(count));
   step_side_by_side<R, damping::Exact, position::Exact, features::PerParticleDamping,
-                    features::PerParticleAcceleration, features::ForceAccumulator, features::Lifetime>(
-      count, 4, Walk::by_step_alternating);
+                    features::PerParticleAcceleration, features::ForceAccumulator,
+                    features::Lifetime>(count, 4, Walk::by_step_alternating);
   step_side_by_side<R, damping::PerFrame, position::SemiImplicit,
                     features::PerParticleAcceleration>(531, 3, Walk::backward_only);
 }
