@@ -7,6 +7,7 @@
 #include <pointmass/extras/scenes.hpp>
 #include <pointmass/pointmass.hpp>
 
+#include "counting_damping.hpp"
 #include "tolerance.hpp"
 
 using namespace pointmass;
@@ -146,27 +147,9 @@ TEST_CASE("the scenes hold the reference engine's shots") {
   CHECK(p.damping() == 0.99);
 }
 
-namespace {
-// Per-second damping that counts how often its per-step factors (the power function) run.
-struct CountingPerSecond {
-  template <Real R>
-  using State = damping::PerSecond::State<R>;
-  template <Real R>
-  using Factors = damping::Retention<R>;
-  static inline int factor_calls = 0;
-  template <Real R, class T>
-  static Factors<R> factors(const State<R>& state, const T& t) noexcept {
-    ++factor_calls;
-    return damping::PerSecond::factors(state, t);
-  }
-  template <class V, class A, class T, class R>
-  static constexpr V velocity(const V& v0, const A& a, const T& t, const Factors<R>& f) noexcept {
-    return damping::PerSecond::velocity(v0, a, t, f);
-  }
-};
-}  // namespace
 
 TEST_CASE("a fixed-step loop computes the damping factors once, and again only when needed") {
+  using pointmass::test::CountingPerSecond;
   using Counted = Particle<float, CountingPerSecond>;
   static_assert(Counted::caches_factors);
   Counted particle;

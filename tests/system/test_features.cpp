@@ -18,6 +18,7 @@
 
 #include <pointmass/particle_system.hpp>
 
+#include "counting_damping.hpp"
 #include "system_support.hpp"
 
 namespace {
@@ -25,26 +26,7 @@ namespace {
 using namespace pointmass;
 using pointmass::test::random_vector;
 using pointmass::test::same_bits;
-
-// Per-second damping that counts how often its per-step factors (the power function) run.
-// (It states no order or exactness: a user's policy need not, and is taken as first order.)
-struct CountingPerSecond {
-  template <Real R>
-  using State = damping::PerSecond::State<R>;
-  template <Real R>
-  using Factors = damping::Retention<R>;
-  static inline int factor_calls = 0;
-
-  template <Real R, class T>
-  static Factors<R> factors(const State<R>& state, const T& t) noexcept {
-    ++factor_calls;
-    return damping::PerSecond::factors(state, t);
-  }
-  template <class V, class A, class T, class R>
-  static constexpr V velocity(const V& v0, const A& a, const T& t, const Factors<R>& f) noexcept {
-    return damping::PerSecond::velocity(v0, a, t, f);
-  }
-};
+using pointmass::test::CountingPerSecond;
 
 template <class System>
 std::size_t stored_arrays(const System& system) {
