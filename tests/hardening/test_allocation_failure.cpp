@@ -64,10 +64,11 @@ namespace {
 template <class System>
 std::size_t allocations_of_steps(std::size_t count, int steps, bool with_callback) {
   using R = typename System::real;
+  using Position = typename System::position_value;
   System system(count);
   for (std::size_t i = 0; i < count; ++i) {
-    const R x = R(i);
-    const std::size_t index = system.spawn({x, R(10), R(0)}, {R(1), R(2), R(0)});
+    const std::size_t index =
+        system.spawn({Position(i), Position(10), Position(0)}, {R(1), R(2), R(0)});
     if constexpr (System::has_lifetime) {
       system.set_lifetime(index, R(0.02) + R(0.48) * R(i % 17) / R(16));
     }
