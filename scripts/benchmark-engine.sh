@@ -9,10 +9,10 @@
 #        default build/benchmark-engine)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-ensure_packages cmake ninja-build g++ libbenchmark-dev libtbb-dev python3
+ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev libtbb-dev python3
 repetitions=${1:-15}
 build=${POINTMASS_BENCHMARK_BUILD:-"$POINTMASS_ROOT/build/benchmark-engine"}
-build_release "$build" engine_step
+build_release "$build" engine_step "${POINTMASS_BENCHMARKS_ONLY[@]}"
 json=$(mktemp)
 trap 'rm -f "$json"' EXIT
 run_repetitions "$json" "$build/benchmarks/engine_step" "$repetitions" 0.05

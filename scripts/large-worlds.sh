@@ -8,7 +8,7 @@
 #                                                      build/large-worlds)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev python3
+ensure_packages cmake ninja-build g++ libboost-dev libbenchmark-dev libtbb-dev python3
 repetitions=${1:-9}
 build=${LARGE_WORLDS_BUILD:-"$POINTMASS_ROOT/build/large-worlds"}
 build_release "$build" "large_worlds large_worlds_step" -DPOINTMASS_BUILD_TESTS=OFF \
