@@ -5,8 +5,10 @@
 // Every damping and position policy pair, float and double; uniform and per-particle values.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <random>
 #include <tuple>
 #include <type_traits>
@@ -93,9 +95,14 @@ TEST_CASE_TEMPLATE_DEFINE("uniform damping and gravity: system == Particles, bit
 }
 TEST_CASE_TEMPLATE_APPLY(uniform_equivalence, EveryPairFloatAndDouble);
 
-TEST_CASE_TEMPLATE_DEFINE(
-    "per-particle damping, acceleration, mass and forces: system == Particles, bit for bit", C,
-    per_particle_equivalence) {
+namespace {
+
+/// n particles with their own damping, acceleration, mass and forces, in a system
+/// and as Particles, stepped side by side for `steps` steps: the same bits after each step.
+/// Particle i is immovable (inverse mass 0) when immovable(i) says so; the first immovable
+/// and the first movable particle are checked to have stayed and moved.
+template <class C, class Immovable>
+void check_per_particle_equivalence(std::size_t n, int steps, Immovable immovable) {
   using R = typename C::real;
   using D = typename C::damping_policy;
   using P = typename C::position_policy;
@@ -109,41 +116,95 @@ TEST_CASE_TEMPLATE_DEFINE(
   std::uniform_real_distribution<R> damping(R(0), R(1));
   std::uniform_real_distribution<R> mass(R(0.25), R(4));
 
-  System system(count);
-  std::vector<Particle<R, D, P>> particles(count);
-  for (std::size_t i = 0; i < count; ++i) {
+  System system(n);
+  std::vector<Particle<R, D, P>> particles(n);
+  std::size_t still = n;   // the first immovable particle
+  std::size_t moving = n;  // the first movable one
+  for (std::size_t i = 0; i < n; ++i) {
     auto& particle = particles[i];
     particle.set_position(random_vector(engine, R(100)));
     particle.set_velocity(random_vector(engine, R(30)));
     particle.set_acceleration(random_vector(engine, R(20)));
     if constexpr (damped) particle.set_damping(i % 9 == 0 ? R(1) : damping(engine));
-    if (i % 6 == 0) {
+    if (immovable(i)) {
+      still = std::min(still, i);
       particle.set_inverse_mass(R(0));  // immovable
     } else {
+      moving = std::min(moving, i);
       particle.set_mass(mass(engine));
     }
     particle.add_force(random_vector(engine, R(5)));  // carried into the system by spawn
     REQUIRE(system.spawn(particle) == i);
   }
   REQUIRE(matches(system, particles));
-  const Vector3<R> immovable_start = system.position(0);
-  const Vector3<R> movable_start = system.position(1);
-  for (int step = 0; step < 40; ++step) {
+  REQUIRE(still < n);
+  REQUIRE(moving < n);
+  const Vector3<R> immovable_start = system.position(still);
+  const Vector3<R> movable_start = system.position(moving);
+  for (int step = 0; step < steps; ++step) {
     const R t = durations<R>[static_cast<std::size_t>(step) % durations<R>.size()];
     system.step(t);
     for (auto& particle : particles) particle.integrate(t);
     REQUIRE(matches(system, particles));
-    for (std::size_t i = 0; i < count; ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
       REQUIRE(system.force_accumulator(i) == Vector3<R>{});  // cleared by the step
       const Vector3<R> force = random_vector(engine, R(5));
       system.add_force(i, force);
       particles[i].add_force(force);
     }
   }
-  CHECK(same_bits(system.position(0), immovable_start));  // inverse mass 0: never moved
-  CHECK_FALSE(system.position(1) == movable_start);
+  CHECK(same_bits(system.position(still), immovable_start));  // inverse mass 0: never moved
+  CHECK_FALSE(system.position(moving) == movable_start);
+}
+
+}  // namespace
+
+TEST_CASE_TEMPLATE_DEFINE(
+    "per-particle damping, acceleration, mass and forces: system == Particles, bit for bit", C,
+    per_particle_equivalence) {
+  // Every sixth particle immovable: each block of 16 has one, so every step takes the loop
+  // that selects between moving a particle and keeping it.
+  check_per_particle_equivalence<C>(count, 40, [](std::size_t i) { return i % 6 == 0; });
 }
 TEST_CASE_TEMPLATE_APPLY(per_particle_equivalence, EveryPairFloatAndDouble);
+
+TEST_CASE_TEMPLATE_DEFINE(
+    "chunks of movable particles step without the select: system == Particles, bit for bit",
+    C, movable_chunks_equivalence) {
+  // 3,000 particles: the walk alternates (forwards: chunks of 1,024 particles, of which the
+  // first holds immovable particles 17 and 40, past its first block, and the next two none;
+  // backwards: chunks of 256), and particle 2,995 is immovable in the remainder after the
+  // last whole block. The chunks with no immovable particle take the loop without the select.
+  check_per_particle_equivalence<C>(3000, 6, [](std::size_t i) {
+    return i == 17 || i == 40 || i == 2995;
+  });
+}
+TEST_CASE_TEMPLATE_APPLY(movable_chunks_equivalence, EveryPairFloatAndDouble);
+
+TEST_CASE_TEMPLATE("an inverse mass of NaN or -0 written through its column keeps the particle "
+                   "in place among movable ones", R, float, double) {
+  // The column is the user's to write; a step moves only particles whose inverse mass is
+  // > 0, whatever chunk they are in. 2,048 particles: two whole chunks.
+  using System = ParticleSystem<R, damping::PerSecond, position::Euler,
+                                features::PerParticleAcceleration, features::ForceAccumulator>;
+  std::mt19937 engine(11);
+  System system(2048);
+  for (std::size_t i = 0; i < 2048; ++i) {
+    system.spawn(random_vector(engine, R(100)), random_vector(engine, R(30)));
+    system.set_acceleration(i, random_vector(engine, R(20)));
+  }
+  const auto inverse_mass = system.template column<Column::inverse_mass>();
+  inverse_mass[100] = std::numeric_limits<R>::quiet_NaN();
+  inverse_mass[1500] = -R(0);
+  const System before = system;
+  for (int step = 0; step < 3; ++step) system.step(R(1) / R(60));
+  for (const std::size_t i : {std::size_t{100}, std::size_t{1500}}) {
+    CHECK(same_bits(system.position(i), before.position(i)));
+    CHECK(same_bits(system.velocity(i), before.velocity(i)));
+  }
+  CHECK_FALSE(system.position(101) == before.position(101));
+  CHECK_FALSE(system.position(1501) == before.position(1501));
+}
 
 TEST_CASE_TEMPLATE("the step kernel over one index is the step", R, float, double) {
   using System = ParticleSystem<R, damping::PerSecond, position::Kinematic,

@@ -88,11 +88,24 @@ class SystemKernel {
       ((std::is_same_v<D, damping::PerSecond> || std::is_same_v<D, damping::Exact>) &&
        !wider_than_double_v<R>);
 
+  /// True when the step loop skips the select that keeps immovable particles in place, for
+  /// runs of blocks whose particles are all movable (forces, positions stored as R, float
+  /// or double): a scene's particles usually all are, and the select costs a fifth of the
+  /// full-featured step (docs/performance.md).
+  static constexpr bool skips_movable_select =
+      Layout::has_forces && plain_positions && !wider_than_double_v<R>;
+
+  /// The most particles whose inverse masses one test covers (skips_movable_select): the
+  /// forward walk's segments; a multiple of backward_chunk (the backward walk's), and few
+  /// enough that their inverse masses stay in the L1 cache for the step.
+  static constexpr std::size_t movable_chunk = 1024;
+
   /// The loop's trip count is a multiple of this (the widest vector: 16 floats, 8 doubles).
   static constexpr std::size_t vector_block = 16;
   /// The backward walk's chunk, a multiple of vector_block.
   static constexpr std::size_t backward_chunk = 256;
   static_assert(backward_chunk % vector_block == 0);
+  static_assert(movable_chunk % backward_chunk == 0);
 
   /// While the arrays take at most this many bytes, `step` walks the particles forwards and
   /// backwards in turn: each step then starts on the particles the step before finished
@@ -141,6 +154,10 @@ class SystemKernel {
 
  private:
   // step_particle once the retention column (if any) holds d^t for this duration.
+  // AllMovable: the caller knows particle i's inverse mass is > 0 (movable_block), so the
+  // step is taken without selecting between the stepped and the unchanged values: the same
+  // bits, since for a movable particle the select keeps the stepped ones.
+  template <bool AllMovable = false>
   POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void step_kept(
       const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
     const R t = parameters.duration;
@@ -172,6 +189,11 @@ class SystemKernel {
                         arrays.velocity_y[i], ay, t, factors);
       advance_stored_if(movable, arrays.position_z[i], arrays.position_error_z, i,
                         arrays.velocity_z[i], az, t, factors);
+    } else if constexpr (Layout::has_forces && AllMovable) {
+      apply_forces(arrays, i, ax, ay, az);
+      advance<D, P>(arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
+      advance<D, P>(arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
+      advance<D, P>(arrays.position_z[i], arrays.velocity_z[i], az, t, factors);
     } else if constexpr (Layout::has_forces) {
       const R inverse_mass = apply_forces(arrays, i, ax, ay, az);
       advance_if_movable(inverse_mass, arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
@@ -205,6 +227,12 @@ class SystemKernel {
     // values in registers instead of reloading them for every vector of particles.
     const Arrays arrays = arrays_in;
     const StepParameters parameters = parameters_in;
+    if constexpr (skips_movable_select) {
+      // Segments of movable_chunk particles, each tested for immovable ones (step_segment).
+      for (; end - begin > movable_chunk; begin += movable_chunk) {
+        step_segment(arrays, begin, movable_chunk, parameters);
+      }
+    }
     step_segment(arrays, begin, end - begin, parameters);
   }
 
@@ -253,9 +281,18 @@ class SystemKernel {
         for (std::size_t k = blocked; k < count; ++k) refresh_retention(arrays, first + k, t);
       }
     }
+    if constexpr (vectorisable && skips_movable_select) {
+      // When every particle of the segment (at most movable_chunk) is movable, its loop
+      // takes no select; else (an immovable particle, a NaN inverse mass) the loop with it.
+      if (all_movable(arrays.inverse_mass + first, blocked)) {
+        step_loop<true>(arrays, first, blocked, parameters);
+      } else {
+        step_loop<false>(arrays, first, blocked, parameters);
+      }
+    } else if constexpr (vectorisable) {
+      step_loop<false>(arrays, first, blocked, parameters);
+    }
     if constexpr (vectorisable) {
-      POINTMASS_DETAIL_INDEPENDENT_ITERATIONS  // the step loop (tests/system probes this line)
-      for (std::size_t k = 0; k < blocked; ++k) step_kept(arrays, first + k, parameters);
       // The remainder (under vector_block particles) marked too: with -march=native it runs
       // as one or two shorter vectors instead of up to 15 scalar steps.
       POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
@@ -267,6 +304,29 @@ class SystemKernel {
 #if defined(__clang__)
 #pragma clang diagnostic pop
 #endif
+
+  // The step loop over particles [first, first + count), count a multiple of vector_block
+  // (said again by the mask, so that the compiler needs no remainder loop): one source line
+  // for both instantiations, so that the vectorisation probes see each of them.
+  template <bool AllMovable>
+  POINTMASS_DETAIL_INLINE static void step_loop(const Arrays& arrays, std::size_t first,
+                                                std::size_t count,
+                                                const StepParameters& parameters) noexcept {
+    const std::size_t blocked = count & ~(vector_block - 1);
+    POINTMASS_DETAIL_INDEPENDENT_ITERATIONS  // the step loop (tests/system probes this line)
+    for (std::size_t k = 0; k < blocked; ++k) step_kept<AllMovable>(arrays, first + k, parameters);
+  }
+
+  // True when each of the `count` inverse masses from `inverse_mass` makes its particle
+  // movable as advance_if_movable's select decides it (0 < m + 0: false for zeros of either
+  // sign and NaN, and for a subnormal m where the processor flushes it to zero): then their
+  // step needs no select. A reduction the compiler vectorises, one load per particle.
+  POINTMASS_DETAIL_INLINE static bool all_movable(const R* inverse_mass,
+                                                  std::size_t count) noexcept {
+    int immovable = 0;
+    for (std::size_t k = 0; k < count; ++k) immovable |= !(inverse_mass[k] + R(0) > R(0));
+    return immovable == 0;
+  }
 
   POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr auto factors_of(
       const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
