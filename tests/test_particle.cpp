@@ -86,6 +86,23 @@ TEST_CASE_TEMPLATE("an infinite-mass particle does not move, whatever acts on it
   CHECK(wall.position() == Vector3<R>{R(1), R(2), R(3)});
   CHECK(wall.velocity() == Vector3<R>{R(5), R(0), R(0)});
   CHECK(wall.force_accumulator() == Vector3<R>{});  // the force does not wait for later
+
+  // Made immovable after a step that kept its length's factors: the next step of that length
+  // (the kept factors' way) does not move it either.
+  Particle<R, damping::PerSecond, position::Kinematic> ball;
+  ball.set_velocity({R(5), R(0), R(0)});
+  ball.set_acceleration(gravity(earth_gravity<R>));
+  ball.set_damping(R(0.5));
+  ball.integrate(R(0.5));
+  REQUIRE(ball.position() != Vector3<R>{});
+  ball.set_inverse_mass(R(0));
+  const Vector3<R> position = ball.position();
+  const Vector3<R> velocity = ball.velocity();
+  ball.add_force({R(1e6), R(1e6), R(1e6)});
+  ball.integrate(R(0.5));
+  CHECK(ball.position() == position);
+  CHECK(ball.velocity() == velocity);
+  CHECK(ball.force_accumulator() == Vector3<R>{});
 }
 
 TEST_CASE_TEMPLATE("a zero duration changes nothing", R, float, double) {

@@ -262,15 +262,31 @@ class BasicParticle {
 #if POINTMASS_HOST_CHECKS
     if (!detail::check_duration("integrate", t)) return;
 #endif
+    if constexpr (caches_factors) {
+      // The length of the last step (the fixed steps games take): the kept factors, and one
+      // comparison fewer. The kept length is never 0, so a zero duration goes on below.
+      if (real_equal(t, cache_.duration)) {
+        if (inverse_mass_ > real(0)) step_with(duration, cache_.factors);
+        else force_accumulator_ = {};  // immovable: forces cannot move it
+        return;
+      }
+    }
     if (real_equal(t, real(0))) return;         // nothing changes, the accumulated force waits
     if (!(inverse_mass_ > real(0))) {  // immovable: forces cannot move it
       force_accumulator_ = {};
       return;
     }
-
     // The factors first: a power function's call then comes before the particle's values are
     // loaded, so none has to be kept across it.
-    const damping_factors factors = step_factors(duration);
+    const damping_factors factors = detail::scalar_factors<D>(damping_, duration);
+    if constexpr (caches_factors) cache_ = {t, factors};
+    step_with(duration, factors);
+  }
+
+ private:
+  /// The step once its damping factors are known (duration > 0, inverse mass > 0).
+  POINTMASS_HD constexpr void step_with(const time_type& duration,
+                                        const damping_factors factors) noexcept {
     const Vector3<acceleration_type> resulting_acceleration =
         typed<acceleration_type>(acceleration_) +
         typed<force_type>(force_accumulator_) * Q::template make<inverse_mass_type>(inverse_mass_);
@@ -301,7 +317,6 @@ class BasicParticle {
     force_accumulator_ = {};
   }
 
- private:
   using position_value = typename Storage::value;
   struct NoPositionError {};
 
@@ -311,19 +326,6 @@ class BasicParticle {
     damping_factors factors{};
   };
   struct NoFactorCache {};
-
-  /// D::factors(damping_, duration), computed again only when the length changes.
-  POINTMASS_HD constexpr damping_factors step_factors(const time_type& duration) noexcept {
-    if constexpr (caches_factors) {
-      const real t = Q::raw(duration);
-      if (real_equal(t, cache_.duration)) return cache_.factors;
-      const damping_factors factors = detail::scalar_factors<D>(damping_, duration);
-      cache_ = {t, factors};
-      return factors;
-    } else {
-      return detail::scalar_factors<D>(damping_, duration);
-    }
-  }
 
   template <class T, class N>
   POINTMASS_HD static constexpr Vector3<T> typed(const Vector3<N>& v) noexcept {

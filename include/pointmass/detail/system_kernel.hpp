@@ -90,8 +90,8 @@ class SystemKernel {
 
   /// True when the step loop skips the select that keeps immovable particles in place, for
   /// runs of blocks whose particles are all movable (forces, positions stored as R, float
-  /// or double): a scene's particles usually all are, and the select costs a fifth of the
-  /// full-featured step (docs/performance.md).
+  /// or double): a scene's particles usually all are (docs/design.md, "Movable particles
+  /// step without the select").
   static constexpr bool skips_movable_select =
       Layout::has_forces && plain_positions && !wider_than_double_v<R>;
 
