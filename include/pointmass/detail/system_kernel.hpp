@@ -89,9 +89,9 @@ class SystemKernel {
        !wider_than_double_v<R>);
 
   /// True when the step loop skips the select that keeps immovable particles in place, for
-  /// runs of blocks whose particles are all movable (forces, positions stored as R, float
-  /// or double): a scene's particles usually all are (docs/design.md, "Movable particles
-  /// step without the select").
+  /// segments whose particles are all movable (forces, positions stored as R, float or
+  /// double): a scene's particles usually all are (docs/design.md, "Movable particles step
+  /// without the select").
   static constexpr bool skips_movable_select =
       Layout::has_forces && plain_positions && !wider_than_double_v<R>;
 
@@ -154,9 +154,9 @@ class SystemKernel {
 
  private:
   // step_particle once the retention column (if any) holds d^t for this duration.
-  // AllMovable: the caller knows particle i's inverse mass is > 0 (movable_block), so the
-  // step is taken without selecting between the stepped and the unchanged values: the same
-  // bits, since for a movable particle the select keeps the stepped ones.
+  // AllMovable: the caller has found particle i movable (all_movable), so the step is taken
+  // without selecting between the stepped and the unchanged values: the same bits, since for
+  // a movable particle the select keeps the stepped ones.
   template <bool AllMovable = false>
   POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void step_kept(
       const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
