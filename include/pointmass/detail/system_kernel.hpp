@@ -301,10 +301,6 @@ class SystemKernel {
       for (std::size_t k = 0; k < count; ++k) step_kept(arrays, first + k, parameters);
     }
   }
-#if defined(__clang__)
-#pragma clang diagnostic pop
-#endif
-
   // The step loop over particles [first, first + count), count a multiple of vector_block
   // (said again by the mask, so that the compiler needs no remainder loop): one source line
   // for both instantiations, so that the vectorisation probes see each of them.
@@ -327,6 +323,10 @@ class SystemKernel {
     for (std::size_t k = 0; k < count; ++k) immovable |= !(inverse_mass[k] + R(0) > R(0));
     return immovable == 0;
   }
+
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
 
   POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr auto factors_of(
       const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
