@@ -224,7 +224,7 @@ int main(int argc, char** argv) {
     std::fputs("large_worlds_step: a step did not move the particles\n", stderr);
     return EXIT_FAILURE;
   }
-  // The smoke test (large_worlds_step.cmake sets POINTMASS_BENCHMARK_SMOKE) skips the 10^7
+  // The smoke test (benchmarks/CMakeLists.txt sets POINTMASS_BENCHMARK_SMOKE) skips the 10^7
   // sizes, which take most of a minute to set up in a debug build.
   return run_benchmarks(argc, argv, "--benchmark_filter=/(1000|100000)$");
 }

@@ -366,7 +366,7 @@ int main(int argc, char** argv) {
                stderr);
     return 1;
   }
-  // The smoke test (system_step.cmake sets POINTMASS_BENCHMARK_SMOKE) skips the 10^7 sizes,
-  // which take minutes to set up in a debug build.
+  // The smoke test (benchmarks/CMakeLists.txt sets POINTMASS_BENCHMARK_SMOKE) skips the 10^7
+  // sizes, which take minutes to set up in a debug build.
   return run_benchmarks(argc, argv, "--benchmark_filter=/(1000|100000)$");
 }

@@ -2,11 +2,14 @@
 # SPDX-License-Identifier: BSL-1.0
 # The whole test suite, as CI runs it: installs what is missing, then builds and runs every
 # test with g++ (debug, contract checks on), with clang (release), and under AddressSanitizer
-# and UndefinedBehaviorSanitizer (the behaviour tests; the tests of the build itself, the Kokkos
-# step's bit-for-bit comparisons and the plain replay of the fuzzing inputs, which the clang
-# configuration's libFuzzer run checks under the same sanitizers, run in the other two). The
-# comparisons beyond the default damping policy run in the clang configuration, where the
-# loops they compare are optimised and vectorised. All warnings are errors.
+# and UndefinedBehaviorSanitizer (the behaviour tests; the tests of the build itself and the
+# Kokkos step's bit-for-bit comparisons run in the other two). The comparisons beyond the
+# default damping policy run in the clang configuration, where the loops they compare are
+# optimised and vectorised. All warnings are errors.
+# To fit two cores, the debug builds carry line tables only (-g1) and the sanitizers run
+# unoptimised; the benchmarks and their smoke tests are built in the clang configuration,
+# optimised as when they measure; the plain replay of the fuzzing inputs runs in the g++
+# configuration only (clang's libFuzzer run replays them through clang's code, sanitized).
 #   scripts/test.sh            everything
 #   scripts/test.sh gcc        one configuration: gcc, clang or sanitize
 set -euo pipefail
@@ -22,14 +25,19 @@ for configuration in "${configurations[@]}"; do
   case "$configuration" in
     gcc)
       configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=Debug \
+        -DCMAKE_CXX_FLAGS_DEBUG=-g1 -DPOINTMASS_BUILD_BENCHMARKS=OFF \
         -DPOINTMASS_TEST_EVERY_KOKKOS_PAIR=OFF
       ;;
-    clang) configure_and_build "$dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release ;;
+    clang)
+      configure_and_build "$dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release \
+        -DPOINTMASS_FUZZ_REPLAY=OFF
+      ;;
     sanitize)
       configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=Debug \
-        -DPOINTMASS_BUILD_BENCHMARKS=OFF -DPOINTMASS_BUILD_CHECKS=OFF \
-        -DPOINTMASS_TEST_KOKKOS_EQUIVALENCE=OFF -DPOINTMASS_FUZZ_REPLAY=OFF \
-        "-DCMAKE_CXX_FLAGS=-O1 -fno-omit-frame-pointer -fsanitize=address,undefined,float-divide-by-zero -fno-sanitize-recover=all"
+        -DCMAKE_CXX_FLAGS_DEBUG=-g1 -DPOINTMASS_BUILD_BENCHMARKS=OFF \
+        -DPOINTMASS_BUILD_CHECKS=OFF -DPOINTMASS_TEST_KOKKOS_EQUIVALENCE=OFF \
+        -DPOINTMASS_FUZZ_REPLAY=OFF \
+        "-DCMAKE_CXX_FLAGS=-fno-omit-frame-pointer -fsanitize=address,undefined,float-divide-by-zero -fno-sanitize-recover=all"
       ;;
     *) echo "unknown configuration: $configuration (gcc, clang, sanitize)" >&2; exit 2 ;;
   esac
