@@ -49,9 +49,9 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 /// The new velocity is stored before the position is computed from the old one, kept in v0:
 /// then v0 cannot be read from memory again for the position (the store overwrote it). In
 /// the batch's loop, with the position computed first, g++ loaded each velocity twice (once
-/// into a register, once as a multiply-add's memory operand): on a processor with two
-/// address units for loads and stores together that made the lean step 1.2x slower than a
-/// hand-written loop (docs/performance.md). Same arithmetic, same bits either way.
+/// into a register, once as a multiply-add's memory operand): where loads and stores share
+/// two address units, that made the lean step 1.25x as slow as a hand-written loop
+/// (docs/design.md). Same arithmetic, same bits either way.
 template <class D, class P, class Position, class Velocity, class Acceleration, class Time,
           class Factors>
 POINTMASS_HD constexpr void advance(Position& p, Velocity& v, const Acceleration& a,
