@@ -126,6 +126,12 @@ class BasicParticle {
       !std::is_empty_v<damping_factors> && !std::is_same_v<D, damping::PerFrame>;
   /// True when the position is stored in the arithmetic's own precision (as today).
   static constexpr bool plain_position = std::is_same_v<position_precision, real>;
+  /// True for the reference engine's own equations (AccelerateThenDamp with Euler, plain
+  /// numbers and positions), whose factor is a call to the C library's power function: a new
+  /// step length then takes the engine's order (integrate).
+  static constexpr bool engine_order =
+      std::is_same_v<D, damping::AccelerateThenDamp> && std::is_same_v<P, position::Euler> &&
+      plain_position && std::is_same_v<time_type, real>;
   static_assert(plain_position || PositionPrecision<position_precision, real>,
                 "BasicParticle: the quantity set's position_precision must be a Real at least "
                 "as wide as its real, or Compensated<real>");
@@ -281,6 +287,19 @@ class BasicParticle {
     if (real_equal(t, real(0))) return;         // nothing changes, the accumulated force waits
     if (!(inverse_mass_ > real(0))) {  // immovable: forces cannot move it
       force_accumulator_ = {};
+      return;
+    }
+    if constexpr (engine_order) {
+      // The engine's order: everything but the damping is computed and stored before the
+      // power function's call, so nothing has to be kept across the call (every vector
+      // register is caller-saved), then the velocity is damped. The operations of advance
+      // (p1 = p0 + v0 t, v1 = (v0 + a t) d^t) on the same values: the same bits.
+      position_ = position_ + velocity_ * t;
+      velocity_ = velocity_ + (acceleration_ + force_accumulator_ * inverse_mass_) * t;
+      force_accumulator_ = {};
+      const damping_factors factors = detail::scalar_factors<D>(damping_, duration);
+      cache_ = {t, factors};
+      velocity_ = velocity_ * factors.kept;
       return;
     }
     // The factors first: a power function's call then comes before the particle's values are
