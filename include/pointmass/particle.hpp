@@ -50,7 +50,7 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 /// then v0 cannot be read from memory again for the position (the store overwrote it). In
 /// the batch's loop, with the position computed first, g++ loaded each velocity twice (once
 /// into a register, once as a multiply-add's memory operand): where loads and stores share
-/// two address units, that made the lean step 1.25x as slow as a hand-written loop
+/// two address units, that held the lean step below a hand-written loop's speed
 /// (docs/design.md). Same arithmetic, same bits either way.
 template <class D, class P, class Position, class Velocity, class Acceleration, class Time,
           class Factors>
