@@ -66,7 +66,7 @@ enum class Storage { float_positions, double_positions, compensated_positions };
 
 // The sparks' step by hand (per-second damping with d^t once per step, p + v0 t, gravity):
 // v1 = v0 d^t + a t and the displacement v0 t in float, added to a position stored as float,
-// as double, or as a float pair with TwoSum (error terms e).
+// as double, or as a float pair with Fast2Sum (error terms e), as precision.hpp does.
 template <Storage S, class P>
 void hand_sparks(P* __restrict px, P* __restrict py, P* __restrict pz, float* __restrict ex,
                  float* __restrict ey, float* __restrict ez, float* __restrict vx,
@@ -76,8 +76,7 @@ void hand_sparks(P* __restrict px, P* __restrict py, P* __restrict pz, float* __
     if constexpr (S == Storage::compensated_positions) {
       const float y = d + e[i];
       const float s = p + y;
-      const float b = s - p;
-      e[i] = (p - (s - b)) + (y - b);
+      e[i] = y - (s - p);
       p = s;
     } else {
       static_cast<void>(e);
@@ -151,7 +150,7 @@ void BM_HandSparks(benchmark::State& state) {
 }
 
 // The least a step can do with the storage: load every byte the sparks' step loads, add a
-// constant, and store it back (one addition per element, no conversion, no TwoSum). Its time
+// constant, and store it back (one addition per element, no conversion, no Fast2Sum). Its time
 // against all-float's is what the bytes alone cost on this machine: a step that does little
 // besides its loads and stores costs about that ratio too.
 template <Storage S, class P>

@@ -51,7 +51,7 @@ for kind, title in (("Sparks", "sparks: per-second damping, p + v t, gravity"),
     if kind == "Sparks":
         # The bound: the same arithmetic written by hand over plain arrays of each storage;
         # and what the bytes alone cost: every byte loaded, one addition, stored back.
-        for benchmark, prefix, pair, note in (("BM_HandSparks", "by hand", "float pair (TwoSum)", "the bound"),
+        for benchmark, prefix, pair, note in (("BM_HandSparks", "by hand", "float pair (Fast2Sum)", "the bound"),
                                               ("BM_Traffic", "bytes only", "float pair", "the bytes alone")):
             for variant, label, size in (("float", "float positions", 24), ("double", "double positions", 36),
                                          ("compensated", pair, 36)):

@@ -16,10 +16,13 @@
 //
 //   d  = P::position(0, v0, v1, a, t, f)         in float: the same float inputs as today
 //   p1 = p0 + d                                  in double, or compensated:
-//   Compensated<float>, hi + lo:  y = d + lo;  s = hi + y;  b = s - hi;
-//                                 lo = (hi - (s - b)) + (y - b);  hi = s
-//     (the error-free sum of hi and y, Knuth's TwoSum: lo carries what hi could not hold,
-//      and the next step adds it back, as compensated summation does)
+//   Compensated<float>, hi + lo:  y = d + lo;  s = hi + y;  lo = y - (s - hi);  hi = s
+//     (Dekker's Fast2Sum: lo carries what hi could not hold, and the next step adds it back,
+//      as compensated summation does. Exact, the error-free sum, whenever hi's exponent is at
+//      least y's, which is every step of a particle farther from the origin than one step's
+//      displacement; on a step nearer, hi + y loses at most a float ulp of y, about what
+//      rounding y = d + lo already may. Three additions fewer than TwoSum, a third of the
+//      compensated step's arithmetic: docs/large-worlds.md)
 //
 // So far from the origin the position loses only what the wide storage rounds (about 1e-10 m
 // a step at 1e6 m), not the 1/32 m a float rounds there. Near the origin the velocities are
@@ -245,13 +248,13 @@ struct PositionStorage<Compensated<R>> {
   using value = wider_real_t<R>;
   static constexpr bool compensated = true;
 
-  /// (hi, lo) + d. y = d + lo is the step's displacement with the carried error; TwoSum
-  /// adds it to hi and leaves in lo exactly what the new hi could not hold.
+  /// (hi, lo) + d. y = d + lo is the step's displacement with the carried error; Fast2Sum
+  /// adds it to hi and leaves in lo what the new hi could not hold: exactly when hi's
+  /// exponent is at least y's (s - hi is then exact), and within an ulp of y otherwise.
   POINTMASS_HD static constexpr void add(R& hi, R& lo, R d) noexcept {
     const R y = d + lo;
     const R s = hi + y;
-    const R b = s - hi;
-    lo = (hi - (s - b)) + (y - b);
+    lo = y - (s - hi);
     hi = s;
   }
   POINTMASS_HD static constexpr value value_of(R hi, R lo) noexcept {

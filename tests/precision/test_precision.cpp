@@ -291,6 +291,54 @@ TEST_CASE_TEMPLATE("near the origin: never worse than all-float beyond its posit
   check_near.template operator()<d::PerFrame, p::SemiImplicit>(near_sparks);
 }
 
+// --- the pair's step: Fast2Sum -------------------------------------------------------------
+
+// What one step does to a (hi, lo) pair, against double arithmetic, which holds every sum here
+// exactly (float operands within 2^28 of each other in magnitude): where hi's exponent is at
+// least y's (y = d + lo, the step's displacement with the carried error) the new pair is
+// exactly hi + y; elsewhere (a particle within one step of the origin on that axis) it is
+// within one float ulp of y of it. The pairs are drawn over many binades each way.
+TEST_CASE("Fast2Sum: exact where hi's exponent is at least y's, within an ulp of y elsewhere") {
+  using Pair = pm::detail::PositionStorage<pm::Compensated<float>>;
+  std::mt19937_64 random(2024);
+  std::uniform_real_distribution<double> exponent(-10.0, 17.0);
+  std::uniform_real_distribution<double> fraction(-0.5, 0.5);
+  std::uniform_int_distribution<int> sign(0, 1);
+  const auto draw = [&] {
+    return static_cast<float>((sign(random) != 0 ? -1.0 : 1.0) * std::exp2(exponent(random)));
+  };
+  long exact_cases = 0;
+  long near_cases = 0;
+  double worst_near = 0;  // the largest loss, in ulps of y
+  for (int k = 0; k < 200000; ++k) {
+    float hi = draw();
+    const float d = draw();
+    // The carried error: at most half a float ulp of hi, as add leaves it.
+    float lo = static_cast<float>(float_ulp(std::fabs(static_cast<double>(hi))) * fraction(random));
+    const float y = d + lo;  // what add computes first, rounded as it rounds it
+    const double before = static_cast<double>(hi) + static_cast<double>(y);
+    const bool exact = hi == 0.0f || std::ilogb(hi) >= std::ilogb(y);
+    Pair::add(hi, lo, d);
+    const double after = static_cast<double>(hi) + static_cast<double>(lo);
+    if (exact) {
+      ++exact_cases;
+      if (after != before) {
+        FAIL_CHECK("not exact: the pair misses hi + y = ", before, " by ", after - before);
+        break;
+      }
+    } else {
+      ++near_cases;
+      const double loss = std::fabs(after - before) / float_ulp(std::fabs(static_cast<double>(y)));
+      worst_near = std::max(worst_near, loss);
+    }
+  }
+  MESSAGE(exact_cases, " exact cases, ", near_cases, " nearer the origin, worst loss there ",
+          worst_near, " ulp of y");
+  CHECK(exact_cases > 50000);
+  CHECK(near_cases > 50000);
+  CHECK(worst_near <= 1.0);
+}
+
 // --- render-relative positions --------------------------------------------------------------
 
 TEST_CASE("render-relative: double positions, exact wherever the true offset is a float") {
