@@ -367,8 +367,8 @@ void sizes(benchmark::internal::Benchmark* b) {
   BENCHMARK(BM_System<UniformDampingFeatured<R>>)->Apply(sizes);                                 \
   BENCHMARK(BM_System<Lean<R>>)->Apply(sizes);                                                   \
   BENCHMARK(BM_BandwidthFullFeatured<R>)->Arg(1000000);                                          \
-  BENCHMARK(BM_BandwidthBytes<R, sizeof(Particle<R>)>)->Arg(1000000);                            \
-  BENCHMARK(BM_BandwidthBytes<R, sizeof(HandParticle<R>)>)->Arg(1000000);                        \
+  BENCHMARK(BM_BandwidthBytes<R, sizeof(Particle<R>)>)->Arg(100000)->Arg(1000000);               \
+  BENCHMARK(BM_BandwidthBytes<R, sizeof(HandParticle<R>)>)->Arg(100000)->Arg(1000000);           \
   BENCHMARK(BM_PowAlone<R>)->Apply(sizes)
 
 POINTMASS_ENGINE_BENCHMARKS(float);

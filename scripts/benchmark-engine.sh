@@ -101,18 +101,27 @@ for real in ("float", "double"):
          f"BM_BandwidthFullFeatured<{real}>", "(1 = at the bound)", big)
     line("its memory bound / engine", f"BM_BandwidthFullFeatured<{real}>", engine,
          "(the most the system can reach)", big)
+    beyond_cache = ("100000", "1000000")
     line("`Particle<R>` fixed step / its memory bound", particles,
-         f"BM_BandwidthBytes<{real}, sizeof(Particle<{real}>)>", "(1 = at the bound)", big)
+         f"BM_BandwidthBytes<{real}, sizeof(Particle<{real}>)>", "(1 = at the bound)", beyond_cache)
     line("hand-written lean struct loop / its memory bound", f"BM_HandStruct<{real}>",
-         f"BM_BandwidthBytes<{real}, sizeof(HandParticle<{real}>)>", "(1 = at the bound)", big)
+         f"BM_BandwidthBytes<{real}, sizeof(HandParticle<{real}>)>", "(1 = at the bound)",
+         beyond_cache)
+    line("the lean struct's memory bound / engine",
+         f"BM_BandwidthBytes<{real}, sizeof(HandParticle<{real}>)>", engine,
+         "(the most a particle of the chapter's fields alone can reach)", beyond_cache)
     line("`Particle<R>`'s bound / the lean struct's bound",
          f"BM_BandwidthBytes<{real}, sizeof(Particle<{real}>)>",
-         f"BM_BandwidthBytes<{real}, sizeof(HandParticle<{real}>)>", "(the bytes' ratio)", big)
+         f"BM_BandwidthBytes<{real}, sizeof(HandParticle<{real}>)>", "(the bytes' ratio)",
+         beyond_cache)
     print()
 
 # Each target of the reference engine's job against this run: (what, real, numerator,
-# denominator, sizes, the least ratio that meets it). A time target ("at most 1.03x the time")
-# is the rate ratio's reciprocal.
+# denominator, sizes, the least ratio that meets it[, bound]). A time target ("at most 1.03x
+# the time") is the rate ratio's reciprocal. A bound is a benchmark whose rate over the same
+# denominator is the most any loop of the kind can reach on this machine, where one is
+# measured: a missed size whose bound is itself below the target is out of this machine's
+# reach, and the table says so.
 def particles_of(real, damping, varying):
     return f"BM_Particles<{real}, damping::{damping}, position::Euler, {'true' if varying else 'false'}>"
 def engine_of(real, varying):
@@ -143,27 +152,46 @@ targets += [
      engine_of("double", False), (("1024", 5.0), ("100000", 2.0))),
     ("double: `Particle` at a fixed step over the engine", "double",
      particles_of("double", "PerSecond", False), engine_of("double", False),
-     tuple((n, 2.0) for n in sizes)),
+     tuple((n, 2.0) for n in sizes),
+     # The least bytes a particle of the chapter's state takes (position, velocity,
+     # acceleration, force, inverse mass and its damping: the lean struct, 112 bytes in
+     # double), read and written once a step, over the engine.
+     "BM_BandwidthBytes<double, sizeof(HandParticle<double>)>"),
 ]
 print("### Against the targets\n")
 print("Ratios of rates (higher is faster) from the tables above; a time target is shown as its "
       "rate ratio (time at most 1.5x: rate ratio at least 0.67).\n")
-print("| target | sizes | measured | least | |\n|---|---|---|---|---|")
-for what, real, a, b, at in targets:
-    measured, verdicts = [], []
+print("The column \"bound\" is, where one is measured, the most any loop of that kind reaches "
+      "on this machine over the same baseline (the lean struct's bytes read and written once: "
+      "the chapter's fields alone); a target above its bound is out of this machine's reach.\n")
+print("| target | sizes | measured | least | bound | |\n|---|---|---|---|---|---|")
+for what, real, a, b, at, *bound in targets:
+    measured, verdicts, bounds, beyond = [], [], [], []
     for n, least in at:
         key, base_key = f"{a}/{n}", f"{b}/{n}"
+        bound_key = f"{bound[0]}/{n}" if bound else None
+        limit = rate[bound_key] / rate[base_key] if bound_key in rate and base_key in rate else None
+        bounds.append("-" if limit is None else f"{limit:.2f}")
         if key not in rate or base_key not in rate:
             measured.append("-")
             verdicts.append(False)
+            beyond.append(False)
             continue
         r = rate[key] / rate[base_key]
         measured.append(f"{r:.2f}")
         verdicts.append(r >= least)
+        beyond.append(r < least and limit is not None and limit < least)
     labels = ", ".join(f"{int(n):,}" for n, _ in at)
     leasts = ", ".join(f"{least:.2f}" for _, least in at)
-    verdict = "met" if all(verdicts) else "**missed**"
-    print(f"| {what} | {labels} | {', '.join(measured)} | {leasts} | {verdict} |")
+    missed = [ok or out for ok, out in zip(verdicts, beyond)]
+    if all(verdicts):
+        verdict = "met"
+    elif all(missed):
+        verdict = "**missed**, where missed beyond this machine's bound"
+    else:
+        verdict = "**missed**"
+    bound_cell = ", ".join(bounds) if bound else ""
+    print(f"| {what} | {labels} | {', '.join(measured)} | {leasts} | {bound_cell} | {verdict} |")
 print()
 PY
 publish_table "$POINTMASS_ROOT/docs/performance.md" engine "$tables"
