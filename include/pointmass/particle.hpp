@@ -23,7 +23,7 @@
 //
 // With a position precision other than the arithmetic's (Precision<float, double>,
 // Precision<float, Compensated<float>>), p1 is p0 + d with the displacement
-// d = P::position(0, v0, v1, a, t, f) computed in the arithmetic's precision and added in the
+// d = P::position(-0, v0, v1, a, t, f) computed in the arithmetic's precision and added in the
 // position's (precision.hpp); the velocity is the same, bit for bit, as with plain floats.
 //
 // Owns: advance<D, P> (one step of one body) and BasicParticle / Particle.
@@ -66,13 +66,14 @@ namespace detail {
 
 /// One component's step with a position stored as Storage says (precision.hpp's
 /// PositionStorage): the displacement in the arithmetic's precision (the position policy from
-/// p0 = 0), added to the stored position in the position's. p is the element; lo the error
+/// p0 = -0, which the policy's p0 + x leaves out exactly: -0 + x is x, zeros' signs included),
+/// added to the stored position in the position's. p is the element; lo the error
 /// term (Compensated only; untouched otherwise). Particle::integrate computes the same.
 template <class D, class P, class Storage, class R, class Factors>
 POINTMASS_HD constexpr void advance_stored(typename Storage::element& p, R& lo, R& v,
                                            const R& a, const R& t,
                                            const Factors& factors) noexcept {
-  R displacement = R(0);
+  R displacement = -R(0);  // -0: the policy's p0 + x is then x, exactly (above)
   advance<D, P>(displacement, v, a, t, factors);
   if constexpr (Storage::compensated) {
     Storage::add(p, lo, displacement);
@@ -324,9 +325,9 @@ class BasicParticle {
       advance<D, P>(p, v, resulting_acceleration, duration, factors);
       position_ = raw(p);
     } else {
-      // The displacement from p0 = 0, typed (so SI quantities check its dimensions), then
+      // The displacement from p0 = -0 (see advance_stored), typed (so SI quantities check its dimensions), then
       // added to the stored position in its own precision (precision.hpp).
-      auto displacement = typed<length_type>(Vector3<real>{});
+      auto displacement = typed<length_type>(Vector3<real>{-real(0), -real(0), -real(0)});
       advance<D, P>(displacement, v, resulting_acceleration, duration, factors);
       const Vector3<real> d = raw(displacement);
       if constexpr (Storage::compensated) {

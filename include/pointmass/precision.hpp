@@ -11,10 +11,11 @@
 //
 // Velocity, acceleration, damping, mass, force and the step's arithmetic use the first
 // argument; only the stored position uses the second. A step computes the displacement
-// exactly as the all-float particle would (the position policy applied from p0 = 0 in the
-// arithmetic precision) and adds it to the stored position in the position's precision:
+// exactly as the all-float particle would (the position policy applied from p0 = -0 in the
+// arithmetic precision: -0 + x is x, every bit, so nothing is added for the origin) and adds
+// it to the stored position in the position's precision:
 //
-//   d  = P::position(0, v0, v1, a, t, f)         in float: the same float inputs as today
+//   d  = P::position(-0, v0, v1, a, t, f)        in float: the same float inputs as today
 //   p1 = p0 + d                                  in double, or compensated:
 //   Compensated<float>, hi + lo:  y = d + lo;  s = hi + y;  lo = y - (s - hi);  hi = s
 //     (Dekker's Fast2Sum: lo carries what hi could not hold, and the next step adds it back,

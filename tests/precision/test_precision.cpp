@@ -339,6 +339,30 @@ TEST_CASE("Fast2Sum: exact where hi's exponent is at least y's, within an ulp of
   CHECK(worst_near <= 1.0);
 }
 
+// The displacement is the policy's p0 + x from p0 = -0, which is x to the last bit: a step that
+// moves nothing leaves a position of -0 at -0, as all-float's p0 + v0 t does (from p0 = +0 the
+// displacement of a velocity of -0 would come out +0, and -0 + +0 is +0).
+TEST_CASE("double positions: a step of zero displacement keeps the sign of zero, as all-float's") {
+  const Vector3<float> minus_zero{-0.0f, -0.0f, -0.0f};
+  pm::Particle<float> plain;
+  plain.set_position(minus_zero);
+  plain.set_velocity(minus_zero);
+  pm::Particle<DoublePositions> wide;
+  wide.set_position({-0.0, -0.0, -0.0});
+  wide.set_velocity(minus_zero);
+  pm::ParticleSystem<DoublePositions> system(1);
+  system.spawn({-0.0, -0.0, -0.0}, minus_zero);
+  plain.integrate(1.0f / 60);
+  wide.integrate(1.0f / 60);
+  system.step(1.0f / 60);
+  REQUIRE(std::signbit(plain.position().x));  // what all-float does
+  CHECK(std::signbit(wide.position().x));
+  CHECK(std::signbit(wide.position().y));
+  CHECK(std::signbit(wide.position().z));
+  CHECK(std::signbit(system.position_x()[0]));
+  CHECK(system_matches(system, 0, wide));
+}
+
 // --- render-relative positions --------------------------------------------------------------
 
 TEST_CASE("render-relative: double positions, exact wherever the true offset is a float") {
