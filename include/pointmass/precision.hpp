@@ -271,14 +271,25 @@ struct PositionStorage<Compensated<R>> {
   /// each), so the offset is z + (ze + te), z the offset rounded to the wider type (within
   /// what te, tiny beside it, moves) and ze + te the sign of what it rounded away; round_once
   /// rounds it to T (float, or R) once. For a camera near the particle (|origin| within a
-  /// factor of two of |hi|) e is 0; an offset that is a T comes out exact.
+  /// factor of two of |hi|) e is 0; an offset that is a T comes out exact. Where hi + lo is
+  /// itself a wider number (lo within the wider type's digits of hi, as a set position's
+  /// split and the usual steps leave it), one TwoSum of it and origin does the same.
   template <Real T = float>
   POINTMASS_HD static constexpr T relative(R hi, R lo, value origin) noexcept {
     const value h = static_cast<value>(hi);
+    const value l = static_cast<value>(lo);
+    // The usual case first: hi + lo held exactly by the wider type (lo within its digits of
+    // hi; TwoSum's error says so), so the offset is p - origin, one TwoSum and round_once.
+    const value p = h + l;
+    const value bp = p - h;
+    if (real_equal((h - (p - bp)) + (l - bp), value(0))) {
+      const value s = p - origin;
+      const value b = s - p;
+      return round_once<T>(s, (p - (s - b)) + (-origin - b));
+    }
     const value s = h - origin;
     const value b = s - h;
     const value e = (h - (s - b)) + (-origin - b);
-    const value l = static_cast<value>(lo);
     const value s2 = s + l;
     const value b2 = s2 - s;
     const value e2 = (s - (s2 - b2)) + (l - b2);

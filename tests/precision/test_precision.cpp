@@ -526,6 +526,48 @@ TEST_CASE_TEMPLATE("render-relative: the exact offset rounded once to float, aga
   CHECK(twice_differs > 100);
 }
 
+TEST_CASE("render-relative: compensated pairs whose hi + lo is no double, at a float midpoint") {
+  // relative() takes a shorter road where hi + lo is a double; here lo lies 6 to 15, or 30 to
+  // 38, bits further below hi's last bit than a double reaches (many steps can leave such an
+  // error term), so the full one must be taken. The camera is placed so that hi - camera is
+  // a float midpoint m, and the offset m + lo must round to m's neighbour on lo's side: the
+  // road for double sums would round hi + lo to double first and, where that drops lo (30 to
+  // 38 bits down), land on m itself and round to even.
+  using Pair = pm::detail::PositionStorage<pm::Compensated<float>>;
+  std::mt19937_64 random(61);
+  std::uniform_int_distribution<int> exponent(-20, 30);
+  std::uniform_int_distribution<int> small_gap(6, 15);
+  std::uniform_int_distribution<int> large_gap(30, 38);
+  std::uniform_real_distribution<double> unit(1, 2);
+  std::uniform_real_distribution<double> ratio(0.25, 0.5);
+  int checked = 0;
+  int dropped_by_double = 0;  // lo below half a double ulp of hi: hi + lo rounds to hi
+  for (int n = 0; n < 20000; ++n) {
+    const int e = exponent(random);
+    const double sign = n % 2 == 0 ? 1 : -1;
+    const float hi = static_cast<float>(sign * std::ldexp(unit(random), e));
+    const int gap = n % 4 < 2 ? small_gap(random) : large_gap(random);
+    const float lo =
+        static_cast<float>(std::ldexp(unit(random) * (n % 3 == 0 ? -1 : 1), e - 24 - gap));
+    // m: halfway between two floats, below and above, a quarter to a half of hi.
+    const float below = static_cast<float>(double(hi) * ratio(random));
+    const float above = std::nextafter(below, std::copysign(1e30f, below));
+    const double m = (double(below) + double(above)) / 2;
+    const double origin = double(hi) - m;
+    if (double(hi) - origin != m) continue;  // not exact after all
+    const float wanted = (lo > 0) == (above > below) ? above : below;
+    dropped_by_double += double(hi) + double(lo) == double(hi);
+    const float got = Pair::relative<float>(hi, lo, origin);
+    if (!same_bits(got, wanted)) {
+      INFO("hi = ", hi, ", lo = ", lo, ", origin = ", origin);
+      CHECK(same_bits(got, wanted));
+    }
+    ++checked;
+  }
+  CHECK(checked > 15000);
+  CHECK(dropped_by_double > 5000);
+}
+
 TEST_CASE("render-relative: a particle and the system agree, and a short buffer writes nothing") {
   pm::Particle<CompensatedPositions, pm::damping::None> particle;
   particle.set_position({4.0e7, 1.0, -2.5e6});
