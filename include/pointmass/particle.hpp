@@ -325,8 +325,8 @@ class BasicParticle {
       advance<D, P>(p, v, resulting_acceleration, duration, factors);
       position_ = raw(p);
     } else {
-      // The displacement from p0 = -0 (see advance_stored), typed (so SI quantities check its dimensions), then
-      // added to the stored position in its own precision (precision.hpp).
+      // The displacement from p0 = -0 (see advance_stored), typed (so SI quantities check its
+      // dimensions), then added to the stored position in its own precision (precision.hpp).
       auto displacement = typed<length_type>(Vector3<real>{-real(0), -real(0), -real(0)});
       advance<D, P>(displacement, v, resulting_acceleration, duration, factors);
       const Vector3<real> d = raw(displacement);
