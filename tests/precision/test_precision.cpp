@@ -527,9 +527,10 @@ TEST_CASE_TEMPLATE("render-relative: the exact offset rounded once to float, aga
 }
 
 TEST_CASE("render-relative: compensated pairs whose hi + lo is no double, at a float midpoint") {
-  // relative() takes a shorter road where hi + lo is a double; here lo lies 6 to 15, or 30 to
-  // 38, bits further below hi's last bit than a double reaches (many steps can leave such an
-  // error term), so the full one must be taken. The camera is placed so that hi - camera is
+  // relative() takes a shorter road where hi + lo is a double. A double holds 29 bits below
+  // hi's last bit; here lo's top bit lies 7 to 16 bits below it, so its last bits do not fit,
+  // or 31 to 39, so none does (many steps can leave such an error term), and the full road
+  // must be taken. The camera is placed so that hi - camera is
   // a float midpoint m, and the offset m + lo must round to m's neighbour on lo's side: the
   // road for double sums would round hi + lo to double first and, where that drops lo (30 to
   // 38 bits down), land on m itself and round to even.
