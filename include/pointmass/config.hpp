@@ -80,6 +80,15 @@
 #define POINTMASS_HOST_CHECKS 0
 #endif
 
+// Inlined into the caller at any optimisation level: the hot paths whose call from a loop
+// would stop vectorisation (a batch's kernel, the damping factors, the exponential) or cost
+// more than the work (a Particle's step once its factors are known).
+#if defined(__GNUC__)
+#define POINTMASS_DETAIL_ALWAYS_INLINE [[gnu::always_inline]]
+#else
+#define POINTMASS_DETAIL_ALWAYS_INLINE
+#endif
+
 namespace pointmass {
 
 /// What a failed check reports: enough to write "integrate: duration = -0.1 must be >= 0".

@@ -52,13 +52,9 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
-// The per-second policies' factors are inlined into a batch's loop at any optimisation level:
-// g++ -O2 would otherwise call them per particle, and a call stops vectorisation.
-#if defined(__GNUC__)
-#define POINTMASS_DETAIL_FACTORS_INLINE [[gnu::always_inline]]
-#else
-#define POINTMASS_DETAIL_FACTORS_INLINE
-#endif
+// The per-second policies' factors are inlined into a batch's loop at any optimisation level
+// (POINTMASS_DETAIL_ALWAYS_INLINE): g++ -O2 would otherwise call them per particle, and a call
+// stops vectorisation.
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
@@ -229,7 +225,7 @@ struct PerSecond : detail::DampThenAccelerate {
   using State = LogDamping<R>;
 
   template <Real R, class T>
-  POINTMASS_DETAIL_FACTORS_INLINE POINTMASS_HD static constexpr Factors<R> factors(
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr Factors<R> factors(
       const State<R>& state, const T& t) noexcept {
     if constexpr (wider_than_double_v<R>) {
       return {real_pow(state.value(), in_seconds(t))};
@@ -306,7 +302,7 @@ struct Exact {
   /// multiplies phi1's relative rounding error by phi1 / (|x| phi2), below 2 / |x| <= 2.
   /// Branch-free (selects), so a loop over particles with their own damping vectorises.
   template <Real R, class T>
-  POINTMASS_DETAIL_FACTORS_INLINE POINTMASS_HD static constexpr Factors<R> factors(
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr Factors<R> factors(
       const State<R>& state, const T& t) noexcept {
     // x = k t <= 0: zero when d = 1 or t = 0, and nothing is taken away: phi1 = 1,
     // phi2 = 1/2. Every branch is computed and the right one selected, on inputs that raise
@@ -387,4 +383,3 @@ using damping_factors_t =
 
 }  // namespace pointmass
 
-#undef POINTMASS_DETAIL_FACTORS_INLINE

@@ -271,20 +271,33 @@ class BasicParticle {
   /// Advances the particle by `duration` (see the file comment). A negative, NaN or infinite
   /// duration is a contract violation, checked when POINTMASS_CHECKS is on; zero changes
   /// nothing.
-  POINTMASS_HD constexpr void integrate(const time_type& duration) {
-    const real t = Q::raw(duration);
+  /// Inlined at any optimisation level, as is the step it takes with kept factors: a loop of
+  /// fixed steps then makes no call per particle (g++ -O2 would call the whole function, and
+  /// at -O3 it called the step; a call costs about as much as the step, and the force the
+  /// caller has just added is stored and reloaded across it). A new step length goes to
+  /// integrate_new_length, which the compiler inlines or calls as it judges.
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr void integrate(
+      const time_type& duration) {
 #if POINTMASS_HOST_CHECKS
-    if (!detail::check_duration("integrate", t)) return;
+    if (!detail::check_duration("integrate", Q::raw(duration))) return;
 #endif
     if constexpr (caches_factors) {
       // The length of the last step (the fixed steps games take): the kept factors, and one
       // comparison fewer. The kept length is never 0, so a zero duration goes on below.
-      if (real_equal(t, cache_.duration)) {
+      if (real_equal(Q::raw(duration), cache_.duration)) {
         if (inverse_mass_ > real(0)) step_with(duration, cache_.factors);
         else force_accumulator_ = {};  // immovable: forces cannot move it
         return;
       }
     }
+    integrate_new_length(duration);
+  }
+
+ private:
+  /// integrate for a step length whose factors are not kept (all of them, for a policy that
+  /// keeps none): 0 <= duration, finite.
+  POINTMASS_HD constexpr void integrate_new_length(const time_type& duration) {
+    const real t = Q::raw(duration);
     if (real_equal(t, real(0))) return;         // nothing changes, the accumulated force waits
     if (!(inverse_mass_ > real(0))) {  // immovable: forces cannot move it
       force_accumulator_ = {};
@@ -310,9 +323,8 @@ class BasicParticle {
     step_with(duration, factors);
   }
 
- private:
   /// The step once its damping factors are known (duration > 0, inverse mass > 0).
-  POINTMASS_HD constexpr void step_with(const time_type& duration,
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr void step_with(const time_type& duration,
                                         const damping_factors factors) noexcept {
     const Vector3<acceleration_type> resulting_acceleration =
         typed<acceleration_type>(acceleration_) +

@@ -46,13 +46,9 @@
 #include "../config.hpp"
 #include "../real.hpp"
 
-// Inlined into the caller's loop at any optimisation level: clang and g++ would otherwise call
-// the larger of these functions (exp_unit) from a loop, and a call stops vectorisation.
-#if defined(__GNUC__)
-#define POINTMASS_DETAIL_ALWAYS_INLINE [[gnu::always_inline]]
-#else
-#define POINTMASS_DETAIL_ALWAYS_INLINE
-#endif
+// These functions are inlined into the caller's loop at any optimisation level
+// (POINTMASS_DETAIL_ALWAYS_INLINE): clang and g++ would otherwise call the larger of them
+// (exp_unit) from a loop, and a call stops vectorisation.
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
@@ -379,4 +375,3 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R pow_unit_scalar(const Sp
 
 }  // namespace pointmass::detail
 
-#undef POINTMASS_DETAIL_ALWAYS_INLINE

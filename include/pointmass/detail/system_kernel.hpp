@@ -39,13 +39,8 @@
 #define POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
 #endif
 
-// The step kernel is inlined into its loop even at -O2, where g++ would otherwise call the
-// larger configurations' kernel and so not vectorise the loop.
-#if defined(__GNUC__)
-#define POINTMASS_DETAIL_INLINE [[gnu::always_inline]]
-#else
-#define POINTMASS_DETAIL_INLINE
-#endif
+// The step kernel is inlined into its loop even at -O2 (POINTMASS_DETAIL_ALWAYS_INLINE), where
+// g++ would otherwise call the larger configurations' kernel and so not vectorise the loop.
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
@@ -136,7 +131,7 @@ class SystemKernel {
   /// previous position first. The user's columns are not touched. A particle of inverse mass
   /// 0 does not move. Plain arithmetic on the arrays: runs on a GPU as it runs here (see
   /// docs/hardening.md for the compiler settings under which a device gives the same bits).
-  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void step_particle(
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void step_particle(
       const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
     if constexpr (Layout::per_particle_retention) {
       if (parameters.refresh) refresh_retention(arrays, i, parameters.duration);
@@ -145,7 +140,7 @@ class SystemKernel {
   }
 
   /// Particle i's d^t for a step of `duration`, kept in the damping_retention column.
-  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void refresh_retention(
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void refresh_retention(
       const Arrays& arrays, std::size_t i, R duration) noexcept {
     if constexpr (Layout::per_particle_retention) {
       arrays.damping_retention[i] = D::factors(Layout::load_damping(arrays, i), duration).kept;
@@ -158,7 +153,7 @@ class SystemKernel {
   // without selecting between the stepped and the unchanged values: the same bits, since for
   // a movable particle the select keeps the stepped ones.
   template <bool AllMovable = false>
-  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void step_kept(
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void step_kept(
       const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
     const R t = parameters.duration;
     if constexpr (Layout::has_interpolation) {  // the position before this step, for drawing
@@ -263,7 +258,7 @@ class SystemKernel {
   // Particles [first, first + count): the loop marked for vectorisation (when the
   // configuration can vectorise) over a trip count that is a multiple of vector_block, which
   // lets g++'s -O2 cost model vectorise it without a remainder loop; then the remainder.
-  POINTMASS_DETAIL_INLINE static void step_segment(const Arrays& arrays, std::size_t first,
+  POINTMASS_DETAIL_ALWAYS_INLINE static void step_segment(const Arrays& arrays, std::size_t first,
                                                    std::size_t count,
                                                    const StepParameters& parameters) noexcept {
     const std::size_t blocked = count & ~(vector_block - 1);
@@ -305,7 +300,7 @@ class SystemKernel {
   // (said again by the mask, so that the compiler needs no remainder loop): one source line
   // for both instantiations, so that the vectorisation probes see each of them.
   template <bool AllMovable>
-  POINTMASS_DETAIL_INLINE static void step_loop(const Arrays& arrays, std::size_t first,
+  POINTMASS_DETAIL_ALWAYS_INLINE static void step_loop(const Arrays& arrays, std::size_t first,
                                                 std::size_t count,
                                                 const StepParameters& parameters) noexcept {
     const std::size_t blocked = count & ~(vector_block - 1);
@@ -317,7 +312,7 @@ class SystemKernel {
   // movable as advance_if_movable's select decides it (0 < m + 0: false for zeros of either
   // sign and NaN, and for a subnormal m where the processor flushes it to zero): then their
   // step needs no select. A reduction the compiler vectorises, one load per particle.
-  POINTMASS_DETAIL_INLINE static bool all_movable(const R* inverse_mass,
+  POINTMASS_DETAIL_ALWAYS_INLINE static bool all_movable(const R* inverse_mass,
                                                   std::size_t count) noexcept {
     int immovable = 0;
     for (std::size_t k = 0; k < count; ++k) immovable |= !(inverse_mass[k] + R(0) > R(0));
@@ -328,7 +323,7 @@ class SystemKernel {
 #pragma clang diagnostic pop
 #endif
 
-  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr auto factors_of(
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr auto factors_of(
       const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
     if constexpr (Layout::per_particle_retention) {
       return damping_factors{arrays.damping_retention[i]};
@@ -343,7 +338,7 @@ class SystemKernel {
 
   // Adds the particle's accumulated force times its inverse mass to (ax, ay, az), clears the
   // accumulator, and returns the inverse mass.
-  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr R apply_forces(const Arrays& arrays,
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr R apply_forces(const Arrays& arrays,
                                                                       std::size_t i, R& ax,
                                                                       R& ay, R& az) noexcept {
     const R inverse_mass = arrays.inverse_mass[i];
@@ -361,7 +356,7 @@ class SystemKernel {
   // has no SSE2 pattern for a 64-bit mask from a double comparison, so a `bool` made into a
   // mask left double systems with forces scalar there.
   template <class F>
-  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void advance_if_movable(
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void advance_if_movable(
       R inverse_mass, R& p, R& v, R a, R t, const F& factors) noexcept {
     R p1 = p;
     R v1 = v;
@@ -373,7 +368,7 @@ class SystemKernel {
   // advance_if for a position stored wider or compensated; `error` is the error column
   // (nullptr unless compensated).
   template <class F>
-  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr void advance_stored_if(
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void advance_stored_if(
       bool movable, position_element& p, R* error, std::size_t i, R& v, R a, R t,
       const F& factors) noexcept {
     position_element p1 = p;
@@ -389,7 +384,7 @@ class SystemKernel {
 
   // condition ? if_true : if_false, as bit operations (g++ -O2 does not if-convert `?:` here).
   template <class T>
-  POINTMASS_DETAIL_INLINE POINTMASS_HD static constexpr T select(bool condition, T if_true,
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr T select(bool condition, T if_true,
                                                                  T if_false) noexcept {
     if constexpr (sizeof(T) == 4 || sizeof(T) == 8) {
       using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
@@ -405,5 +400,4 @@ class SystemKernel {
 
 }  // namespace pointmass::detail
 
-#undef POINTMASS_DETAIL_INLINE
 #undef POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
