@@ -377,13 +377,13 @@ class BasicParticle {
   }
 
   Vector3<typename Storage::element> position_{};
-  [[no_unique_address]] std::conditional_t<Storage::compensated, Vector3<real>, NoPositionError>
-      position_error_{};
+  real inverse_mass_ = real(1);
   Vector3<real> velocity_{};
   Vector3<real> acceleration_{};
   Vector3<real> force_accumulator_{};
-  real inverse_mass_ = real(1);
   [[no_unique_address]] damping_state damping_{};
+  [[no_unique_address]] std::conditional_t<Storage::compensated, Vector3<real>, NoPositionError>
+      position_error_{};
   [[no_unique_address]] std::conditional_t<caches_factors, FactorCache, NoFactorCache> cache_{};
 };
 
