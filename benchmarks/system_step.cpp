@@ -340,6 +340,29 @@ void BM_CopyStrided(benchmark::State& state) { BM_CopyOut<R, 2>(state); }
 template <class R>
 void BM_CopyInterpolated(benchmark::State& state) { BM_CopyOut<R, 3>(state); }
 
+// A renderer's hand-off from wide positions (precision.hpp): positions_relative_to a camera
+// near the particles, which are spread over a kilometre 1e6 m out, into {x, y, z} floats;
+// each offset rounded once (round_via_odd), the cost beside copy_positions' from float.
+template <class S>
+void BM_Relative(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  ParticleSystem<S> system(n);
+  std::mt19937 engine(5);
+  std::uniform_real_distribution<double> spread(-500, 500);
+  for (std::size_t i = 0; i < n; ++i) {
+    system.spawn(Vector3<double>{1e6 + spread(engine), spread(engine), 1e6 + spread(engine)},
+                 {});
+  }
+  const Vector3<double> camera{1e6 + 0.3, 1.7, 1e6 - 2.1};
+  std::vector<Vector3<float>> offsets(n);
+  for (auto _ : state) {
+    system.positions_relative_to(camera, std::span(offsets));
+    benchmark::DoNotOptimize(offsets.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
 void handoff(benchmark::internal::Benchmark* b) { b->Arg(100000)->Arg(1000000); }
 BENCHMARK_TEMPLATE(BM_System, Sparks<float>)->Arg(1000000);
 BENCHMARK_TEMPLATE(BM_System, Interpolated<float>)->Apply(handoff);
@@ -348,6 +371,8 @@ BENCHMARK_TEMPLATE(BM_CopyPacked, float)->Apply(handoff);
 BENCHMARK_TEMPLATE(BM_CopyVec3, float)->Apply(handoff);
 BENCHMARK_TEMPLATE(BM_CopyStrided, float)->Apply(handoff);
 BENCHMARK_TEMPLATE(BM_CopyInterpolated, float)->Apply(handoff);
+BENCHMARK_TEMPLATE(BM_Relative, Precision<float, double>)->Apply(handoff);
+BENCHMARK_TEMPLATE(BM_Relative, Precision<float, Compensated<float>>)->Apply(handoff);
 
 template <class R>
 bool step_moves_particles() {

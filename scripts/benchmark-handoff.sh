@@ -14,7 +14,7 @@ build_release "$build" system_step "${POINTMASS_BENCHMARKS_ONLY[@]}"
 json=$(mktemp)
 trap 'rm -f "$json"' EXIT
 run_repetitions "$json" "$build/benchmarks/system_step" "$repetitions" 0.05 \
-  --benchmark_filter='BM_System<(Sparks|Interpolated|GameSparks)<float>>/(100000|1000000)$|BM_Copy'
+  --benchmark_filter='BM_System<(Sparks|Interpolated|GameSparks)<float>>/(100000|1000000)$|BM_Copy|BM_Relative'
 table="$build/handoff.md"
 median_table "$json" "$repetitions" >"$table" <<'PY'
 print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; medians of "
@@ -27,7 +27,11 @@ rows = [("`step`, `ParticleSystem<float>` (lean)", "BM_System<Sparks<float>>"),
         ("`copy_positions` into `float[3 n]`", "BM_CopyPacked<float>"),
         ("`copy_positions` into `{x, y, z}` structs", "BM_CopyVec3<float>"),
         ("`copy_positions`, stride 6 (interleaved vertices)", "BM_CopyStrided<float>"),
-        ("`copy_interpolated_positions`, alpha 0.5, `float[3 n]`", "BM_CopyInterpolated<float>")]
+        ("`copy_interpolated_positions`, alpha 0.5, `float[3 n]`", "BM_CopyInterpolated<float>"),
+        ("`positions_relative_to` a camera, `Precision<float, double>`, into `Vector3<float>`",
+         "BM_Relative<Precision<float, double>>"),
+        ("`positions_relative_to` a camera, `Precision<float, Compensated<float>>`",
+         "BM_Relative<Precision<float, Compensated<float>>>")]
 for label, name in rows:
     cells = []
     for n in ("100000", "1000000"):

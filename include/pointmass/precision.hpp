@@ -202,6 +202,39 @@ POINTMASS_HD constexpr T round_once(W z, W r) noexcept {
   }
 }
 
+/// The same result as round_once<T>(z, r), without a branch, so that a loop over many
+/// offsets (positions_relative_to) vectorises and does not mispredict: z is first rounded to
+/// odd in W (z itself when exact or when its last bit is odd, else its neighbour on r's
+/// side, the other W around x), then to nearest in T. Rounding to odd with at least two
+/// more digits than T's and then to nearest rounds once: every T and every midpoint between
+/// two T (the boundaries of rounding to nearest, overflow's included) is a W with an even
+/// last bit, so an odd W lies strictly on x's side of each. z must be x rounded to nearest
+/// in W (or either W around x), r of the sign of x - z; z = 0 is taken as exact (x is then
+/// too small for any T but 0), and an infinite z or a NaN r as z. For W of IEEE bits only
+/// (float or double) with T at least two digits narrower; round_once otherwise.
+template <Real T, Real W>
+POINTMASS_HD constexpr T round_via_odd(W z, W r) noexcept {
+  if constexpr (!has_ieee_bits_v<W> ||
+                std::numeric_limits<W>::digits < std::numeric_limits<T>::digits + 2) {
+    return round_once<T>(z, r);
+  } else {
+    using Bits = typename FloatBits<W>::type;
+    constexpr int sign_shift = int(sizeof(W) * 8 - 1);
+    const Bits bits = __builtin_bit_cast(Bits, z);
+    // 1 when z is inexact (r nonzero, z nonzero and finite) and its last bit is even.
+    const W magnitude =
+        __builtin_bit_cast(W, static_cast<Bits>(bits & FloatBits<W>::magnitude_mask));
+    // (& and |, not && and ||: no branch for a loop's vectoriser to give up on)
+    const bool inexact = ((r < W(0)) | (r > W(0))) & (magnitude > W(0)) &
+                         (magnitude <= std::numeric_limits<W>::max());
+    const Bits step = static_cast<Bits>(inexact) & ~bits & Bits{1};
+    // Towards x: magnitude up when r has z's sign (bits + 1), down otherwise (bits - 1).
+    const Bits down = static_cast<Bits>((__builtin_bit_cast(Bits, r) ^ bits) >> sign_shift);
+    const Bits odd = static_cast<Bits>(bits + step - ((step & down) << 1));
+    return static_cast<T>(__builtin_bit_cast(W, odd));
+  }
+}
+
 /// How a position of precision Position is stored and stepped. For a Real: one number.
 template <class Position>
 struct PositionStorage {
@@ -222,8 +255,8 @@ struct PositionStorage {
   POINTMASS_HD static constexpr element element_of(value x) noexcept { return x; }
   /// p - origin, rounded once to T (float for a renderer, the arithmetic's Real for a force
   /// generator): the difference s rounded in the element's precision, its error e (TwoSum,
-  /// exact) and round_once(s, e), so a difference rounded to an element and then to T is not
-  /// rounded twice. Exact when the true offset is a T (then it is an element too, and IEEE
+  /// exact) and round_via_odd(s, e) (round_once's result without a branch), so a difference
+  /// rounded to an element and then to T is not rounded twice. Exact when the true offset is a T (then it is an element too, and IEEE
   /// subtraction returns it exactly).
   template <Real T = float>
   POINTMASS_HD static constexpr T relative(element p, value origin) noexcept {
@@ -233,7 +266,7 @@ struct PositionStorage {
     } else {
       const element b = s - p;
       const element e = (p - (s - b)) + (-origin - b);
-      return round_once<T>(s, e);
+      return round_via_odd<T>(s, e);
     }
   }
 };
@@ -269,11 +302,12 @@ struct PositionStorage<Compensated<R>> {
   /// hi + lo - origin: hi - origin = s + e exactly (TwoSum), s + lo = s2 + e2 exactly
   /// (TwoSum), and the offset is s2 + e + e2: e + e2 = t + te and s2 + t = z + ze (TwoSum
   /// each), so the offset is z + (ze + te), z the offset rounded to the wider type (within
-  /// what te, tiny beside it, moves) and ze + te the sign of what it rounded away; round_once
-  /// rounds it to T (float, or R) once. For a camera near the particle (|origin| within a
-  /// factor of two of |hi|) e is 0; an offset that is a T comes out exact. Where hi + lo is
-  /// itself a wider number (lo within the wider type's digits of hi, as a set position's
-  /// split and the usual steps leave it), one TwoSum of it and origin does the same.
+  /// what te, tiny beside it, moves) and ze + te the sign of what it rounded away;
+  /// round_via_odd rounds it to T (float, or R) once. For a camera near the particle
+  /// (|origin| within a factor of two of |hi|) e is 0; an offset that is a T comes out
+  /// exact. Where hi + lo is itself a wider number (lo within the wider type's digits of hi,
+  /// as a set position's split and the usual steps leave it), one TwoSum of it and origin
+  /// does the same.
   template <Real T = float>
   POINTMASS_HD static constexpr T relative(R hi, R lo, value origin) noexcept {
     const value h = static_cast<value>(hi);
@@ -285,7 +319,7 @@ struct PositionStorage<Compensated<R>> {
     if (real_equal((h - (p - bp)) + (l - bp), value(0))) {
       const value s = p - origin;
       const value b = s - p;
-      return round_once<T>(s, (p - (s - b)) + (-origin - b));
+      return round_via_odd<T>(s, (p - (s - b)) + (-origin - b));
     }
     const value s = h - origin;
     const value b = s - h;
@@ -299,7 +333,7 @@ struct PositionStorage<Compensated<R>> {
     const value z = s2 + t;
     const value bz = z - s2;
     const value ze = (s2 - (z - bz)) + (t - bz);
-    return round_once<T>(z, ze + te);
+    return round_via_odd<T>(z, ze + te);
   }
 };
 

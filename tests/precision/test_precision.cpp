@@ -484,6 +484,68 @@ TEST_CASE("render-relative: rounded once at the edge of the range too") {
   }
 }
 
+TEST_CASE("round_via_odd: round_once's float, branch-free, for every kind of double offset") {
+  // positions_relative_to rounds each offset z + r (z the double nearest, r of the sign of
+  // what z dropped) to float by way of rounding to odd; round_once (checked against long
+  // double below) does it with branches. They must agree bit for bit on float midpoints
+  // from either side, exact values, offsets in float's subnormal range and beyond its
+  // largest value, zero, and an infinite z.
+  using pm::detail::round_once;
+  using pm::detail::round_via_odd;
+  std::mt19937_64 random(97);
+  std::uniform_int_distribution<int> exponent(-160, 130);
+  std::uniform_real_distribution<double> unit(1, 2);
+  std::uniform_int_distribution<int> kind(0, 3);
+  const double tiny_r[] = {0.0, -0.0, 1e-300, -1e-300};
+  int compared = 0;
+  int midpoints_inexact = 0;  // a float midpoint z with r nonzero: where rounding z alone errs
+  const auto compare = [&](double z, double r) {
+    const float odd = round_via_odd<float>(z, r);
+    const float once = round_once<float>(z, r);
+    if (!same_bits(odd, once)) {
+      INFO("z = ", z, " (", std::hexfloat, z, "), r = ", r, std::defaultfloat);
+      CHECK(same_bits(odd, once));
+    }
+    ++compared;
+  };
+  for (int n = 0; n < 200000; ++n) {
+    const double sign = n % 2 == 0 ? 1 : -1;
+    double z = sign * std::ldexp(unit(random), exponent(random));
+    switch (kind(random)) {
+      case 0: {  // a float midpoint: halfway between z rounded to float and its neighbour
+        const float f = static_cast<float>(z);
+        if (!std::isfinite(f) || f == 0) break;
+        z = (double(f) + double(std::nextafter(f, 2 * f))) / 2;
+        break;
+      }
+      case 1: z = double(static_cast<float>(z)); break;  // a float
+      case 2: z = std::nextafter(z, 0.0); break;           // an even or odd last bit
+      default: break;
+    }
+    // r: zero, or below half an ulp of z either way (what a TwoSum's error can be).
+    const double half_ulp = (std::nextafter(std::fabs(z), 1e308) - std::fabs(z)) / 2;
+    const double r =
+        n % 5 == 0 ? tiny_r[n % 4] : (n % 3 == 0 ? -1 : 1) * half_ulp * unit(random) / 2;
+    const float f = static_cast<float>(z);
+    const float toward_z = std::nextafter(f, z > double(f) ? 1e30f : -1e30f);
+    midpoints_inexact += r != 0 && std::isfinite(f) && double(f) != z &&
+                         std::fabs(z - double(f)) * 2 == std::fabs(double(toward_z) - double(f));
+    compare(z, r);
+  }
+  // The edges: zero with an error term either way, the largest float's midpoint with
+  // 2^128, the smallest subnormal float's halfway point, an infinite z with a NaN error.
+  const double big = 0x1p128 - 0x1p103;
+  for (const double z : {0.0, -0.0, big, -big, 0x1p-150, -0x1p-150, 0x1p-149 * 1.5}) {
+    for (const double r : {0.0, -0.0, 1e-320, -1e-320, 1e-60, -1e-60}) compare(z, r);
+  }
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  compare(inf, nan);
+  compare(-inf, nan);
+  CHECK(compared > 200000);
+  CHECK(midpoints_inexact > 10000);
+}
+
 TEST_CASE_TEMPLATE("render-relative: the exact offset rounded once to float, against long double",
                    S, DoublePositions, CompensatedPositions) {
   // Positions p and cameras o within a factor of 2^8 of each other (so p - o is exact in long

@@ -5,11 +5,25 @@
 // CMakeLists.txt). With POINTMASS_PROBE_BACKWARD it instantiates only the backward walk
 // (step_range_backward), and no other loop (Lifetime's expiry pass), so a vectorised loop
 // in the report can only be that walk's.
+// With POINTMASS_PROBE_RELATIVE it compiles only positions_relative_to of a system with double
+// positions (the renderer's hand-off from wide positions; round_via_odd has no branch).
 // With POINTMASS_PROBE_EXPONENTIAL=<loop> it compiles only that loop of the library's
 // exponential (detail/exponential.hpp) over per-particle damping, a loop in this file:
 //   1 pow_unit_loop<float>   2 pow_unit_loop<double>   (d^t, PerSecond's per-particle factor)
 //   3 exp_unit_loop<float>   4 exp_unit_loop<double>   (d^t and d^t - 1, Exact's)
-#if defined(POINTMASS_PROBE_EXPONENTIAL)
+#if defined(POINTMASS_PROBE_RELATIVE)
+#include <span>
+
+#include <pointmass/particle_system.hpp>
+
+namespace pm = pointmass;
+
+void relative_probe(const pm::ParticleSystem<pm::Precision<float, double>>& system,
+                    const pm::Vector3<double>& camera, std::span<pm::Vector3<float>> offsets) {
+  system.positions_relative_to(camera, offsets);
+}
+
+#elif defined(POINTMASS_PROBE_EXPONENTIAL)
 #include <cstddef>
 
 #include <pointmass/detail/exponential.hpp>
