@@ -235,6 +235,15 @@ POINTMASS_HD constexpr T round_via_odd(W z, W r) noexcept {
   }
 }
 
+/// round_via_odd where BranchFree (a loop over many offsets, whose branches would mispredict
+/// and keep it from vectorising), round_once otherwise (one offset at a time: its branches
+/// predict, and it costs less). The same T either way.
+template <Real T, bool BranchFree, Real W>
+POINTMASS_HD constexpr T round_offset(W z, W r) noexcept {
+  if constexpr (BranchFree) return round_via_odd<T>(z, r);
+  else return round_once<T>(z, r);
+}
+
 /// How a position of precision Position is stored and stepped. For a Real: one number.
 template <class Position>
 struct PositionStorage {
@@ -255,10 +264,10 @@ struct PositionStorage {
   POINTMASS_HD static constexpr element element_of(value x) noexcept { return x; }
   /// p - origin, rounded once to T (float for a renderer, the arithmetic's Real for a force
   /// generator): the difference s rounded in the element's precision, its error e (TwoSum,
-  /// exact) and round_via_odd(s, e) (round_once's result without a branch), so a difference
-  /// rounded to an element and then to T is not rounded twice. Exact when the true offset is a T (then it is an element too, and IEEE
+  /// exact) and round_offset(s, e) (round_once, or round_via_odd: the same T without a
+  /// branch), so a difference rounded to an element and then to T is not rounded twice. Exact when the true offset is a T (then it is an element too, and IEEE
   /// subtraction returns it exactly).
-  template <Real T = float>
+  template <Real T = float, bool BranchFree = false>
   POINTMASS_HD static constexpr T relative(element p, value origin) noexcept {
     const element s = p - origin;
     if constexpr (std::numeric_limits<element>::digits <= std::numeric_limits<T>::digits) {
@@ -266,7 +275,7 @@ struct PositionStorage {
     } else {
       const element b = s - p;
       const element e = (p - (s - b)) + (-origin - b);
-      return round_via_odd<T>(s, e);
+      return round_offset<T, BranchFree>(s, e);
     }
   }
 };
@@ -303,12 +312,12 @@ struct PositionStorage<Compensated<R>> {
   /// (TwoSum), and the offset is s2 + e + e2: e + e2 = t + te and s2 + t = z + ze (TwoSum
   /// each), so the offset is z + (ze + te), z the offset rounded to the wider type (within
   /// what te, tiny beside it, moves) and ze + te the sign of what it rounded away;
-  /// round_via_odd rounds it to T (float, or R) once. For a camera near the particle
+  /// round_offset rounds it to T (float, or R) once. For a camera near the particle
   /// (|origin| within a factor of two of |hi|) e is 0; an offset that is a T comes out
   /// exact. Where hi + lo is itself a wider number (lo within the wider type's digits of hi,
   /// as a set position's split and the usual steps leave it), one TwoSum of it and origin
   /// does the same.
-  template <Real T = float>
+  template <Real T = float, bool BranchFree = false>
   POINTMASS_HD static constexpr T relative(R hi, R lo, value origin) noexcept {
     const value h = static_cast<value>(hi);
     const value l = static_cast<value>(lo);
@@ -319,7 +328,7 @@ struct PositionStorage<Compensated<R>> {
     if (real_equal((h - (p - bp)) + (l - bp), value(0))) {
       const value s = p - origin;
       const value b = s - p;
-      return round_via_odd<T>(s, (p - (s - b)) + (-origin - b));
+      return round_offset<T, BranchFree>(s, (p - (s - b)) + (-origin - b));
     }
     const value s = h - origin;
     const value b = s - h;
@@ -333,7 +342,7 @@ struct PositionStorage<Compensated<R>> {
     const value z = s2 + t;
     const value bz = z - s2;
     const value ze = (s2 - (z - bz)) + (t - bz);
-    return round_via_odd<T>(z, ze + te);
+    return round_offset<T, BranchFree>(z, ze + te);
   }
 };
 

@@ -476,6 +476,12 @@ TEST_CASE("render-relative: rounded once at the edge of the range too") {
   const Vector3<float> offset = far.position_relative_to({1e-30, -1e-30, 0});
   CHECK(offset.x == std::numeric_limits<float>::max());
   CHECK(offset.y == -std::numeric_limits<float>::max());
+  pm::ParticleSystem<DoublePositions> system(1);
+  system.spawn(far);
+  Vector3<float> batch[1];  // the branch-free rounding of positions_relative_to
+  system.positions_relative_to({1e-30, -1e-30, 0}, batch);
+  CHECK(batch[0].x == std::numeric_limits<float>::max());
+  CHECK(batch[0].y == -std::numeric_limits<float>::max());
   // The same for double from long double, where long double is wider.
   if constexpr (std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits) {
     const long double Md = 0x1p1024L - 0x1p970L;
@@ -576,11 +582,14 @@ TEST_CASE_TEMPLATE("render-relative: the exact offset rounded once to float, aga
     const Vector3<double> camera{o, -o, 0};
     const Vector3<float> got = particle.position_relative_to(camera);
     system.set_position(0, particle.position());
+    Vector3<float> batch[1];  // positions_relative_to: the branch-free rounding (round_via_odd)
+    system.positions_relative_to(camera, batch);
     if (!same_bits(got, Vector3<float>{oracle, -oracle, 0}) ||
-        !same_bits(system.position_relative_to(0, camera), got)) {
+        !same_bits(system.position_relative_to(0, camera), got) || !same_bits(batch[0], got)) {
       INFO("p = ", p, ", o = ", o);
       CHECK(same_bits(got, Vector3<float>{oracle, -oracle, 0}));
       CHECK(same_bits(system.position_relative_to(0, camera), got));
+      CHECK(same_bits(batch[0], got));
     }
     ++checked;
   }
@@ -621,9 +630,11 @@ TEST_CASE("render-relative: compensated pairs whose hi + lo is no double, at a f
     const float wanted = (lo > 0) == (above > below) ? above : below;
     dropped_by_double += double(hi) + double(lo) == double(hi);
     const float got = Pair::relative<float>(hi, lo, origin);
-    if (!same_bits(got, wanted)) {
+    const float branch_free = Pair::relative<float, true>(hi, lo, origin);
+    if (!same_bits(got, wanted) || !same_bits(branch_free, wanted)) {
       INFO("hi = ", hi, ", lo = ", lo, ", origin = ", origin);
       CHECK(same_bits(got, wanted));
+      CHECK(same_bits(branch_free, wanted));
     }
     ++checked;
   }

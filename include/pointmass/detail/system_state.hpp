@@ -358,17 +358,23 @@ class SystemState {
       return load(a.position_x, a.position_y, a.position_z, i);
     }
   }
-  template <Real T>
+  /// Particle i's offset from origin, each component rounded once to T (precision.hpp's
+  /// relative; BranchFree for a loop over many particles).
+  template <Real T, bool BranchFree = false>
   static Vector3<T> relative(const Arrays& a, std::size_t i,
                              const Vector3<position_value>& origin) noexcept {
     if constexpr (compensated) {
-      return {Storage::template relative<T>(a.position_x[i], a.position_error_x[i], origin.x),
-              Storage::template relative<T>(a.position_y[i], a.position_error_y[i], origin.y),
-              Storage::template relative<T>(a.position_z[i], a.position_error_z[i], origin.z)};
+      return {
+          Storage::template relative<T, BranchFree>(a.position_x[i], a.position_error_x[i],
+                                                    origin.x),
+          Storage::template relative<T, BranchFree>(a.position_y[i], a.position_error_y[i],
+                                                    origin.y),
+          Storage::template relative<T, BranchFree>(a.position_z[i], a.position_error_z[i],
+                                                    origin.z)};
     } else {
-      return {Storage::template relative<T>(a.position_x[i], origin.x),
-              Storage::template relative<T>(a.position_y[i], origin.y),
-              Storage::template relative<T>(a.position_z[i], origin.z)};
+      return {Storage::template relative<T, BranchFree>(a.position_x[i], origin.x),
+              Storage::template relative<T, BranchFree>(a.position_y[i], origin.y),
+              Storage::template relative<T, BranchFree>(a.position_z[i], origin.z)};
     }
   }
 

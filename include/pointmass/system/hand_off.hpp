@@ -68,7 +68,7 @@ class SystemHandOff : public Base {
     }
     const typename Base::Arrays a = this->arrays();
     for (std::size_t i = 0; i < a.size; ++i) {
-      buffer[i] = Base::template relative<float>(a, i, origin);
+      buffer[i] = Base::template relative<float, true>(a, i, origin);
     }
   }
 };
