@@ -265,8 +265,9 @@ struct PositionStorage {
   /// p - origin, rounded once to T (float for a renderer, the arithmetic's Real for a force
   /// generator): the difference s rounded in the element's precision, its error e (TwoSum,
   /// exact) and round_offset(s, e) (round_once, or round_via_odd: the same T without a
-  /// branch), so a difference rounded to an element and then to T is not rounded twice. Exact when the true offset is a T (then it is an element too, and IEEE
-  /// subtraction returns it exactly).
+  /// branch), so a difference rounded to an element and then to T is not rounded twice.
+  /// Exact when the true offset is a T (then it is an element too, and IEEE subtraction
+  /// returns it exactly).
   template <Real T = float, bool BranchFree = false>
   POINTMASS_HD static constexpr T relative(element p, value origin) noexcept {
     const element s = p - origin;

@@ -258,9 +258,9 @@ class SystemKernel {
   // Particles [first, first + count): the loop marked for vectorisation (when the
   // configuration can vectorise) over a trip count that is a multiple of vector_block, which
   // lets g++'s -O2 cost model vectorise it without a remainder loop; then the remainder.
-  POINTMASS_DETAIL_ALWAYS_INLINE static void step_segment(const Arrays& arrays, std::size_t first,
-                                                   std::size_t count,
-                                                   const StepParameters& parameters) noexcept {
+  POINTMASS_DETAIL_ALWAYS_INLINE static void step_segment(
+      const Arrays& arrays, std::size_t first, std::size_t count,
+      const StepParameters& parameters) noexcept {
     const std::size_t blocked = count & ~(vector_block - 1);
     if constexpr (Layout::per_particle_retention) {
       // A new step length: each particle's d^t first, in a loop of its own (vectorised for
@@ -301,8 +301,9 @@ class SystemKernel {
   // for both instantiations, so that the vectorisation probes see each of them.
   template <bool AllMovable>
   POINTMASS_DETAIL_ALWAYS_INLINE static void step_loop(const Arrays& arrays, std::size_t first,
-                                                std::size_t count,
-                                                const StepParameters& parameters) noexcept {
+                                                       std::size_t count,
+                                                       const StepParameters& parameters)
+      noexcept {
     const std::size_t blocked = count & ~(vector_block - 1);
     POINTMASS_DETAIL_INDEPENDENT_ITERATIONS  // the step loop (tests/system probes this line)
     for (std::size_t k = 0; k < blocked; ++k) step_kept<AllMovable>(arrays, first + k, parameters);
@@ -313,7 +314,7 @@ class SystemKernel {
   // sign and NaN, and for a subnormal m where the processor flushes it to zero): then their
   // step needs no select. A reduction the compiler vectorises, one load per particle.
   POINTMASS_DETAIL_ALWAYS_INLINE static bool all_movable(const R* inverse_mass,
-                                                  std::size_t count) noexcept {
+                                                         std::size_t count) noexcept {
     int immovable = 0;
     for (std::size_t k = 0; k < count; ++k) immovable |= !(inverse_mass[k] + R(0) > R(0));
     return immovable == 0;
@@ -338,9 +339,8 @@ class SystemKernel {
 
   // Adds the particle's accumulated force times its inverse mass to (ax, ay, az), clears the
   // accumulator, and returns the inverse mass.
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr R apply_forces(const Arrays& arrays,
-                                                                      std::size_t i, R& ax,
-                                                                      R& ay, R& az) noexcept {
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr R apply_forces(
+      const Arrays& arrays, std::size_t i, R& ax, R& ay, R& az) noexcept {
     const R inverse_mass = arrays.inverse_mass[i];
     ax = ax + arrays.force_x[i] * inverse_mass;
     ay = ay + arrays.force_y[i] * inverse_mass;
@@ -384,8 +384,9 @@ class SystemKernel {
 
   // condition ? if_true : if_false, as bit operations (g++ -O2 does not if-convert `?:` here).
   template <class T>
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr T select(bool condition, T if_true,
-                                                                 T if_false) noexcept {
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr T select(bool condition,
+                                                                        T if_true,
+                                                                        T if_false) noexcept {
     if constexpr (sizeof(T) == 4 || sizeof(T) == 8) {
       using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
       const Bits mask = Bits(0) - static_cast<Bits>(condition);
