@@ -17,13 +17,17 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <new>
 #include <random>
 #include <type_traits>
+#include <vector>
 
+#include "support/bench_refresh.hpp"
 #include "support/bench_support.hpp"
 
 namespace {
@@ -53,9 +57,12 @@ template <class System>
 void BM_Step(benchmark::State& state) {
   const auto count = static_cast<std::size_t>(state.range(0));
   System system = make_system<System>(count);
+  const SavedVelocities<System> start(system);
+  std::int64_t steps = 0;
   for (auto _ : state) {
     system.step(duration<float>());
     benchmark::ClobberMemory();
+    refresh_now_and_then(state, steps, [&] { start.restore(system); });
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
   state.counters["bytes_per_particle"] = static_cast<double>(System::storage_bytes_per_particle);
@@ -141,10 +148,18 @@ void BM_HandSparks(benchmark::State& state) {
   const float t = duration<float>();
   const float kept = real_pow(0.9f, t);
   const Vector3<float> g = gravity<float>();
+  const std::vector<float> start_x(a.v[0], a.v[0] + a.n), start_y(a.v[1], a.v[1] + a.n),
+      start_z(a.v[2], a.v[2] + a.n);  // the velocities, to put back
+  std::int64_t steps = 0;
   for (auto _ : state) {
     hand_sparks<S>(a.p[0], a.p[1], a.p[2], a.e[0], a.e[1], a.e[2], a.v[0], a.v[1], a.v[2], a.n,
                    g.x, g.y, g.z, t, kept);
     benchmark::ClobberMemory();
+    refresh_now_and_then(state, steps, [&] {
+      std::copy(start_x.begin(), start_x.end(), a.v[0]);
+      std::copy(start_y.begin(), start_y.end(), a.v[1]);
+      std::copy(start_z.begin(), start_z.end(), a.v[2]);
+    });
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(a.n));
 }

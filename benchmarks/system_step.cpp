@@ -7,6 +7,7 @@
 // Counters: items_per_second = particle-steps per second.
 #include <pointmass/parallel.hpp>
 
+#include <pointmass/denormals.hpp>
 #include <pointmass/gravity.hpp>
 
 #include <benchmark/benchmark.h>
@@ -18,13 +19,16 @@
 #include <cstdio>
 #include <cstdlib>
 #include <execution>
+#include <limits>
 #include <new>
+#include <optional>
 #include <random>
 #include <span>
 #include <type_traits>
 #include <vector>
 
 #include "support/bench_parallel.hpp"
+#include "support/bench_refresh.hpp"
 
 namespace {
 
@@ -57,39 +61,6 @@ System make_system(std::size_t count) {
   return system;
 }
 
-// A system is stepped thousands to millions of times: damping alone (x and z, which gravity
-// does not feed) would take its velocities into float's subnormal range, where arithmetic is
-// many times slower and the loop would measure that instead. So every `refresh_interval`
-// steps, outside the timing, the velocities are put back to where they started. Per-second
-// damping 0.9 keeps 0.9^(4096/60) = 7.6e-4 of a velocity over 4,096 steps of 1/60 s;
-// per-frame damping 0.9 keeps 0.9 a step (a float velocity of 10 is subnormal after about
-// 850 steps), so it is refreshed every 256 steps (0.9^256 = 2e-12).
-template <class D>
-constexpr std::int64_t refresh_interval = std::is_same_v<D, damping::PerFrame> ? 256 : 4096;
-
-template <class D = damping::PerSecond, class Restore>
-void refresh_now_and_then(benchmark::State& state, std::int64_t& steps, Restore&& restore) {
-  if (++steps % refresh_interval<D> != 0) return;
-  state.PauseTiming();
-  restore();
-  state.ResumeTiming();
-}
-
-/// The velocities of a system, to put back.
-template <class System>
-struct SavedVelocities {
-  explicit SavedVelocities(System& system)
-      : x(system.velocity_x().begin(), system.velocity_x().end()),
-        y(system.velocity_y().begin(), system.velocity_y().end()),
-        z(system.velocity_z().begin(), system.velocity_z().end()) {}
-  void restore(System& system) const {
-    std::copy(x.begin(), x.end(), system.velocity_x().begin());
-    std::copy(y.begin(), y.end(), system.velocity_y().begin());
-    std::copy(z.begin(), z.end(), system.velocity_z().begin());
-  }
-  std::vector<typename System::real> x, y, z;
-};
-
 template <class System>
 void BM_System(benchmark::State& state) {
   auto system = make_system<System>(static_cast<std::size_t>(state.range(0)));
@@ -101,6 +72,31 @@ void BM_System(benchmark::State& state) {
     benchmark::ClobberMemory();
     refresh_now_and_then<typename System::damping_policy>(state, steps,
                                                           [&] { start.restore(system); });
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+// Particles at rest (docs/performance.md, "Particles at rest"): the sparks of BM_System once
+// damping has taken their x and z velocities into the subnormal range, where they stay (the
+// damped value rounds back to itself). The velocities are put there at once rather than by
+// the 51,000 steps of 1/60 s that damping 0.9 per second takes from 10 m/s in float (in
+// double, 400,000), and are not refreshed. Flush: every step under FlushDenormals, which
+// makes them zero at the first step.
+template <class R, bool Flush>
+void BM_Subnormal(benchmark::State& state) {
+  const auto count = static_cast<std::size_t>(state.range(0));
+  auto system = make_system<ParticleSystem<R>>(count);
+  const R tiny = std::numeric_limits<R>::min() / R(64);
+  for (std::size_t i = 0; i < count; ++i) {
+    const Vector3<R> v = system.velocity(i);
+    system.set_velocity(i, {v.x < R(0) ? -tiny : tiny, v.y, v.z < R(0) ? -tiny : tiny});
+  }
+  const auto t = duration<R>();
+  std::optional<FlushDenormals> flush;
+  if constexpr (Flush) flush.emplace();
+  for (auto _ : state) {
+    system.step(t);
+    benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
@@ -274,6 +270,12 @@ BENCHMARK_TEMPLATE(BM_HandAlwaysAlternating, float)->Arg(1000);
 POINTMASS_BENCH_BOTH(BM_Bandwidth, sizes);
 BENCHMARK_TEMPLATE(BM_System, Sparks<float>)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_System, Sparks<double>)->Apply(sizes);
+// Particles at rest: subnormal x and z velocities, without and with FlushDenormals.
+void at_rest(benchmark::internal::Benchmark* b) { b->Arg(1000)->Arg(100000); }
+BENCHMARK_TEMPLATE(BM_Subnormal, float, false)->Apply(at_rest);
+BENCHMARK_TEMPLATE(BM_Subnormal, float, true)->Apply(at_rest);
+BENCHMARK_TEMPLATE(BM_Subnormal, double, false)->Apply(at_rest);
+BENCHMARK_TEMPLATE(BM_Subnormal, double, true)->Apply(at_rest);
 POINTMASS_BENCH_BOTH(BM_Particles, middle);
 BENCHMARK_TEMPLATE(BM_SystemParallel, Sparks<float>)->Apply(large)->UseRealTime();
 BENCHMARK_TEMPLATE(BM_SystemParallel, Sparks<double>)->Apply(large)->UseRealTime();

@@ -8,6 +8,7 @@
 
 #include "config.hpp"
 #include "damping.hpp"
+#include "denormals.hpp"
 #include "features.hpp"
 #include "fixed_step.hpp"
 #include "forces.hpp"

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: BSL-1.0
+// pointmass/denormals.hpp — subnormal numbers flushed to zero while a guard lives.
+//
+// Damping takes every velocity component that nothing feeds (x and z under gravity, all three
+// for particles at rest) towards zero geometrically, and after enough steps into the
+// subnormal range: below 1.2e-38 in float, where at damping 0.9 per second and 60 steps a
+// second a velocity of 10 m/s arrives after about 14 minutes (in double, below 2.2e-308,
+// after about 2 hours). There it decays to a few hundred times the smallest subnormal and
+// stays (the damped value rounds back to itself), and on many x86 processors every operation
+// on a subnormal takes a microcode assist: the step of a system whose particles have come to
+// rest becomes tens of times slower (docs/performance.md, "Particles at rest", measures it).
+// The values involved are far below anything a game can see, and treating them as zero is
+// what the processor's flush-to-zero (FTZ) and denormals-are-zero (DAZ) modes do.
+//
+// FlushDenormals sets both modes for the calling thread while it lives and restores the
+// previous modes when it is destroyed, the way game physics engines guard their update. Put
+// one around the frame's simulation, or around the thread's whole loop:
+//
+//   {
+//     pointmass::FlushDenormals flush;  // this thread, to the end of the block
+//     sparks.step(dt);
+//   }
+//
+// Results change only where a value would have been subnormal: such a result, or operand,
+// is zero instead (a Particle and a ParticleSystem stepped under the same modes still agree
+// bit for bit). The modes belong to a thread: each worker of a thread pool needs a guard of
+// its own. Supported with g++ and clang on x86-64, and on 32-bit x86 with SSE (the MXCSR
+// register); elsewhere `supported` is false and the guard does nothing.
+//
+// Owns: FlushDenormals.
+// Must not include: anything but config.hpp.
+#pragma once
+
+#include "config.hpp"
+
+#if (defined(__GNUC__) || defined(__clang__)) && \
+    (defined(__x86_64__) || (defined(__i386__) && defined(__SSE__)))
+#define POINTMASS_DETAIL_MXCSR 1
+#else
+#define POINTMASS_DETAIL_MXCSR 0
+#endif
+
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
+
+/// While it lives, the calling thread flushes subnormal results to zero and reads subnormal
+/// operands as zero (see the file comment); its destructor restores the previous modes.
+class FlushDenormals {
+ public:
+  /// True where the guard can set the modes (x86 with SSE, g++ or clang).
+  static constexpr bool supported = POINTMASS_DETAIL_MXCSR == 1;
+
+  FlushDenormals() noexcept : saved_(read()) { write(saved_ | flush_bits); }
+  ~FlushDenormals() { write(saved_); }
+  FlushDenormals(const FlushDenormals&) = delete;
+  FlushDenormals& operator=(const FlushDenormals&) = delete;
+
+  /// True when the calling thread flushes subnormals now (both modes on), whether by a guard
+  /// or otherwise.
+  [[nodiscard]] static bool active() noexcept {
+    return supported && (read() & flush_bits) == flush_bits;
+  }
+
+ private:
+  // MXCSR bit 15: flush to zero; bit 6: denormals are zero.
+  static constexpr unsigned flush_bits = (1u << 15) | (1u << 6);
+
+  static unsigned read() noexcept {
+#if POINTMASS_DETAIL_MXCSR
+    unsigned csr = 0;
+    __asm__ __volatile__("stmxcsr %0" : "=m"(csr));
+    return csr;
+#else
+    return 0;
+#endif
+  }
+  static void write(unsigned csr) noexcept {
+#if POINTMASS_DETAIL_MXCSR
+    // "memory": no load or store of the guarded computation moves across the change.
+    __asm__ __volatile__("ldmxcsr %0" : : "m"(csr) : "memory");
+#else
+    static_cast<void>(csr);
+#endif
+  }
+
+  unsigned saved_;
+};
+
+}  // namespace pointmass
+
+#undef POINTMASS_DETAIL_MXCSR
