@@ -23,9 +23,12 @@
 //
 // Results change only where a value would have been subnormal: such a result, or operand,
 // is zero instead (a Particle and a ParticleSystem stepped under the same modes still agree
-// bit for bit). The modes belong to a thread: each worker of a thread pool needs a guard of
-// its own. Supported with g++ and clang on x86-64, and on 32-bit x86 with SSE (the MXCSR
-// register); elsewhere `supported` is false and the guard does nothing.
+// bit for bit). The modes belong to a thread: each worker of a thread pool of the caller's
+// needs a guard of its own. pointmass::step on a standard execution policy (parallel.hpp)
+// needs none: with libstdc++ it runs on TBB, whose tasks take the modes of the thread that
+// started them, so a guard around the call covers its workers. Supported with g++ and clang
+// on x86-64, and on 32-bit x86 with SSE (the MXCSR register); elsewhere `supported` is false
+// and the guard does nothing.
 //
 // Owns: FlushDenormals.
 // Must not include: anything but config.hpp.

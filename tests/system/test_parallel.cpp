@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: BSL-1.0
 // pointmass::step(std::execution::par_unseq, system, t) computes what system.step(t) does,
-// bit for bit, over many chunks.
+// bit for bit, over many chunks, and under FlushDenormals as well.
+#include <pointmass/denormals.hpp>
 #include <pointmass/parallel.hpp>
 
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <cstddef>
 #include <execution>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -109,4 +113,30 @@ TEST_CASE("a parallel step keeps each particle's d^t for its step length, as the
            same_bits(serial.velocity(i), parallel.velocity(i));
   }
   CHECK(same);
+}
+
+TEST_CASE("a parallel step under FlushDenormals flushes on every thread, as the serial step") {
+  // With libstdc++ the policies run on TBB, whose tasks take the floating-point modes of the
+  // thread that started them: a guard around the call covers the workers too.
+  if (!FlushDenormals::supported) return;
+  constexpr std::size_t count = 16384 * 16;  // 16 chunks, for both threads to take some
+  const float tiny = std::numeric_limits<float>::min() / 64.0f;
+  ParticleSystem<float> serial(count);
+  serial.set_damping(0.9f);
+  for (std::size_t i = 0; i < count; ++i) serial.spawn({1.0f, 2.0f, 3.0f}, {tiny, 1.0f, -tiny});
+  ParticleSystem<float> parallel = serial;
+  {
+    FlushDenormals flush;
+    serial.step(1.0f / 60.0f);
+    pointmass::step(std::execution::par_unseq, parallel, 1.0f / 60.0f);
+  }
+  std::size_t subnormal = 0;
+  std::size_t different = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    subnormal += std::fpclassify(parallel.velocity_x()[i]) == FP_SUBNORMAL;
+    different += !same_bits(parallel.velocity(i), serial.velocity(i));
+  }
+  CHECK(subnormal == 0);
+  CHECK(different == 0);
+  CHECK(serial.velocity(0).x == 0.0f);
 }
