@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "reference_engine.hpp"
+#include "support/bench_refresh.hpp"
 #include "support/bench_support.hpp"
 
 namespace {
@@ -83,14 +84,21 @@ std::vector<P> particles_from_starts(std::size_t count, ToVector vector) {
 
 /// The timed loop of a vector of particles, each stepped by its `integrate`: at a fixed step,
 /// or (Varying) at a length that changes every step.
+/// Every loop below puts its particles (or their velocities) back to where they started every
+/// 4,096 steps, outside the timing (support/bench_refresh.hpp): at 1,024 particles the fastest
+/// loops would otherwise take the x and z velocities into the subnormal range within a second
+/// of running, and time that.
 template <class R, bool Varying, class P>
 void integrate_loop(benchmark::State& state, std::vector<P>& particles) {
+  const std::vector<P> start = particles;
   std::int64_t step = 0;
+  std::int64_t steps = 0;
   for (auto _ : state) {
     const R t = Varying ? varying_duration<R>(step++) : duration<R>();
     for (auto& p : particles) p.integrate(t);
     benchmark::DoNotOptimize(particles.data());
     benchmark::ClobberMemory();
+    refresh_now_and_then(state, steps, [&] { particles = start; });
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(particles.size()));
 }
@@ -149,6 +157,8 @@ void BM_HandStruct(benchmark::State& state) {
     particles[i] = {s[i].position, R(1) / s[i].mass, s[i].velocity, gravity_vector<R>, {},
                     real_pow(damping_value<R>, t)};
   }
+  const std::vector<HandParticle<R>> start = particles;
+  std::int64_t steps = 0;
   for (auto _ : state) {
     for (auto& p : particles) {
       if (p.inverse_mass > R(0)) hand_advance(p, t);
@@ -156,6 +166,7 @@ void BM_HandStruct(benchmark::State& state) {
     }
     benchmark::DoNotOptimize(particles.data());
     benchmark::ClobberMemory();
+    refresh_now_and_then(state, steps, [&] { particles = start; });
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
 }
@@ -192,6 +203,8 @@ void BM_HandSameData(benchmark::State& state) {
                     damping_value<R>, detail::split_log(damping_value<R>), R(-1), R(1)};
   }
   const R t = duration<R>();
+  const std::vector<HandSameData<R>> start = particles;
+  std::int64_t steps = 0;
   for (auto _ : state) {
     for (auto& p : particles) {
       if (p.inverse_mass > R(0)) {
@@ -205,6 +218,7 @@ void BM_HandSameData(benchmark::State& state) {
     }
     benchmark::DoNotOptimize(particles.data());
     benchmark::ClobberMemory();
+    refresh_now_and_then(state, steps, [&] { particles = start; });
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
 }
@@ -345,10 +359,13 @@ void BM_System(benchmark::State& state) {
     for (std::size_t i = 0; i < count; ++i) system.set_mass(i, s[i].mass);
   }
   const R t = duration<R>();
+  const SavedVelocities<System> start(system);
+  std::int64_t steps = 0;
   for (auto _ : state) {
     system.step(t);
     benchmark::DoNotOptimize(system.position_x().data());
     benchmark::ClobberMemory();
+    refresh_now_and_then(state, steps, [&] { start.restore(system); });
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(count));
 }
