@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <bit>
+#include <cfenv>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -82,6 +83,21 @@ TEST_CASE("FlushDenormals: a nested guard restores the modes the outer one set")
     CHECK(bits(half_of_smallest_normal<float>()) == 0u);
   }
   CHECK_FALSE(FlushDenormals::active());
+}
+
+TEST_CASE("FlushDenormals: exception flags raised while it lives stay raised after") {
+  if (!FlushDenormals::supported) return;
+  std::feclearexcept(FE_ALL_EXCEPT);
+  {
+    FlushDenormals flush;
+    volatile float one = 1.0f;
+    volatile float three = 3.0f;
+    volatile float third = one / three;  // inexact, raised by a vector unit's division
+    static_cast<void>(third);
+    REQUIRE(std::fetestexcept(FE_INEXACT) != 0);
+  }
+  CHECK(std::fetestexcept(FE_INEXACT) != 0);  // the guard restores its modes, nothing else
+  std::feclearexcept(FE_ALL_EXCEPT);
 }
 
 TEST_CASE_TEMPLATE(

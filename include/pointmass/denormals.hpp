@@ -52,8 +52,10 @@ class FlushDenormals {
   /// True where the guard can set the modes (x86 with SSE, g++ or clang).
   static constexpr bool supported = POINTMASS_DETAIL_MXCSR == 1;
 
-  FlushDenormals() noexcept : saved_(read()) { write(saved_ | flush_bits); }
-  ~FlushDenormals() { write(saved_); }
+  FlushDenormals() noexcept : saved_(read() & flush_bits) { write(read() | flush_bits); }
+  /// Restores the two modes alone: the exception flags raised meanwhile, and any other change
+  /// to the control register (rounding, traps), stay.
+  ~FlushDenormals() { write((read() & ~flush_bits) | saved_); }
   FlushDenormals(const FlushDenormals&) = delete;
   FlushDenormals& operator=(const FlushDenormals&) = delete;
 
@@ -85,7 +87,7 @@ class FlushDenormals {
 #endif
   }
 
-  unsigned saved_;
+  unsigned saved_;  // the two modes' bits as they were
 };
 
 }  // namespace pointmass
