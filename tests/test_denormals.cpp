@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 // FlushDenormals: subnormal results and operands are zero while a guard lives, the previous
-// modes come back when it dies (nested guards too), and particles whose velocities have
-// decayed into the subnormal range come to rest, a Particle and a ParticleSystem alike.
+// modes come back when it dies (nested guards too) and the exception flags raised meanwhile
+// stay, and particles whose velocities have decayed into the subnormal range come to rest, a
+// Particle and a ParticleSystem alike.
 #include <doctest/doctest.h>
 
 #include <bit>
