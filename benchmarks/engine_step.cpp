@@ -82,19 +82,19 @@ std::vector<P> particles_from_starts(std::size_t count, ToVector vector) {
   return particles;
 }
 
+// Every timed loop below puts its particles (or their velocities) back to where they started
+// every 4,096 steps, outside the timing (support/bench_refresh.hpp): at 1,024 particles the
+// fastest loops would otherwise take the x and z velocities into the subnormal range within a
+// second of running, and time that.
+
 /// The timed loop of a vector of particles, each stepped by its `integrate`: at a fixed step,
 /// or (Varying) at a length that changes every step.
-/// Every loop below puts its particles (or their velocities) back to where they started every
-/// 4,096 steps, outside the timing (support/bench_refresh.hpp): at 1,024 particles the fastest
-/// loops would otherwise take the x and z velocities into the subnormal range within a second
-/// of running, and time that.
 template <class R, bool Varying, class P>
 void integrate_loop(benchmark::State& state, std::vector<P>& particles) {
   const std::vector<P> start = particles;
-  std::int64_t step = 0;
-  std::int64_t steps = 0;
+  std::int64_t steps = 0;  // counted by refresh_now_and_then
   for (auto _ : state) {
-    const R t = Varying ? varying_duration<R>(step++) : duration<R>();
+    const R t = Varying ? varying_duration<R>(steps) : duration<R>();
     for (auto& p : particles) p.integrate(t);
     benchmark::DoNotOptimize(particles.data());
     benchmark::ClobberMemory();
