@@ -122,6 +122,18 @@ void BM_Particles(benchmark::State& state) {
   integrate_loop<R, Varying>(state, particles);
 }
 
+// The Particle a fixed-step scene can choose: damping::PerFrame, given the fraction kept per
+// step (d^t of the per-second d, computed once), keeps no damping state for other lengths and
+// no cache, so it holds exactly the lean struct's fields (BM_HandStruct, below) and does its
+// arithmetic, v = v d^t + a t. Another step length would need its owner to set d^t again.
+template <class R>
+void BM_PerFrameParticles(benchmark::State& state) {
+  auto particles = particles_from_starts<Particle<R, damping::PerFrame>, R>(
+      static_cast<std::size_t>(state.range(0)), [](const Vector3<R>& v) { return v; });
+  for (auto& p : particles) p.set_damping(real_pow(damping_value<R>, duration<R>()));
+  integrate_loop<R, false>(state, particles);
+}
+
 // --- the hand-written loop: the default Particle's arithmetic over a plain struct ---------------
 
 // Its fields in the Particle's order (position, inverse mass, velocity, ...): no two of the
@@ -191,6 +203,8 @@ struct HandSameData {  // in the Particle's order (as HandParticle, above)
   R kept;
 };
 static_assert(sizeof(HandSameData<float>) == sizeof(Particle<float>));
+static_assert(sizeof(HandParticle<float>) == sizeof(Particle<float, damping::PerFrame>));
+static_assert(sizeof(HandParticle<double>) == sizeof(Particle<double, damping::PerFrame>));
 static_assert(sizeof(HandSameData<double>) == sizeof(Particle<double>));
 
 template <class R>
@@ -381,6 +395,7 @@ void sizes(benchmark::internal::Benchmark* b) {
   BENCHMARK(BM_Particles<R, damping::PerSecond, position::Euler, true>)->Apply(sizes);           \
   BENCHMARK(BM_Particles<R, damping::AccelerateThenDamp, position::Euler, false>)->Apply(sizes); \
   BENCHMARK(BM_Particles<R, damping::AccelerateThenDamp, position::Euler, true>)->Apply(sizes);  \
+  BENCHMARK(BM_PerFrameParticles<R>)->Apply(sizes);                                              \
   BENCHMARK(BM_HandStruct<R>)->Apply(sizes);                                                     \
   BENCHMARK(BM_HandSameData<R>)->Apply(sizes);                                                   \
   BENCHMARK(BM_System<FullFeatured<R>>)->Apply(sizes);                                           \

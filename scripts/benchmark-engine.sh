@@ -41,6 +41,8 @@ for real in ("float", "double"):
             ("hand-written struct loop, the Particle's data and step, fixed step",
              f"BM_HandSameData<{real}>", engine),
             ("hand-written lean struct loop (d^t kept, nothing else), fixed step", f"BM_HandStruct<{real}>", engine),
+            ("`Particle<R, PerFrame>` given d^t per step (the lean struct's fields), fixed step",
+             f"BM_PerFrameParticles<{real}>", engine),
             ("`ParticleSystem`, per-particle damping, acceleration, mass and forces",
              f"BM_System<FullFeatured<{real}>>", engine),
             ("`ParticleSystem`, the same with uniform damping",
@@ -82,6 +84,10 @@ for real in ("float", "double"):
          f"BM_HandSameData<{real}>", ">= 0.97 (time <= 1.03x)")
     line("`Particle<R>` fixed step / hand-written lean struct loop", particles, f"BM_HandStruct<{real}>",
          "(the price of the bytes)")
+    line("`Particle<R, PerFrame>` given d^t per step / engine", f"BM_PerFrameParticles<{real}>",
+         engine, "(a fixed-step scene's choice)")
+    line("`Particle<R, PerFrame>` given d^t per step / hand-written lean struct loop",
+         f"BM_PerFrameParticles<{real}>", f"BM_HandStruct<{real}>", "(the same fields and step)")
     line("`Particle<R, AccelerateThenDamp, Euler>` fixed step / engine",
          f"BM_Particles<{real}, damping::AccelerateThenDamp, position::Euler, false>", engine, ">= 1.0")
     line("`Particle<R, AccelerateThenDamp, Euler>` changing step / engine changing step",
