@@ -6,7 +6,8 @@
 // (step_range_backward), and no other loop (Lifetime's expiry pass), so a vectorised loop
 // in the report can only be that walk's.
 // With POINTMASS_PROBE_RELATIVE it compiles only positions_relative_to of a system with double
-// positions (the renderer's hand-off from wide positions; round_via_odd has no branch).
+// positions, or with POINTMASS_PROBE_COMPENSATED as well of one with compensated positions
+// (the renderer's hand-off from wide positions; round_via_odd has no branch).
 // With POINTMASS_PROBE_EXPONENTIAL=<loop> it compiles only that loop of the library's
 // exponential (detail/exponential.hpp) over per-particle damping, a loop in this file:
 //   1 pow_unit_loop<float>   2 pow_unit_loop<double>   (d^t, PerSecond's per-particle factor)
@@ -18,8 +19,14 @@
 
 namespace pm = pointmass;
 
-void relative_probe(const pm::ParticleSystem<pm::Precision<float, double>>& system,
-                    const pm::Vector3<double>& camera, std::span<pm::Vector3<float>> offsets) {
+#if defined(POINTMASS_PROBE_COMPENSATED)
+using Probed = pm::Precision<float, pm::Compensated<float>>;
+#else
+using Probed = pm::Precision<float, double>;
+#endif
+
+void relative_probe(const pm::ParticleSystem<Probed>& system, const pm::Vector3<double>& camera,
+                    std::span<pm::Vector3<float>> offsets) {
   system.positions_relative_to(camera, offsets);
 }
 
