@@ -204,7 +204,7 @@ time on the springs: there a float run twice as wrong as double fails.
   one step as well as many, for about the cost of one `expm1`. Every other combination is
   first order: its error halves when the frame rate doubles.
 * **No drag, constant acceleration (sparks, debris, gravity only)**: `damping::None` +
-  `position::Kinematic` (or `position::Exact`, the same there): exact, and the cheapest.
+  `position::Kinematic` (or `position::Exact`, the same there): exact, and the cheapest of the exact choices.
 * **The seed's defaults** (`PerSecond` + `Euler`): first order; at 60 fps the ballistic
   shots are off by centimetres to a metre after 5 s (tables above). Choose them to match the
   reference engine, not for accuracy.
