@@ -386,3 +386,75 @@ TEST_CASE("FixedStep and the trajectory queries report bad arguments and keep th
           (void)time_to_reach(shell, Axis::y, std::numeric_limits<double>::infinity());
         }).find("time_to_reach: argument 'value'") != std::string::npos);
 }
+
+TEST_CASE("spawn_burst takes its particles back when a rejected one's report throws, or the generator") {
+  using Game = ParticleSystem<float, damping::None, position::Euler, features::Lifetime,
+                              features::Handles>;
+  Game system = three_particles<Game>();
+  const Game before = system;
+  const typename Game::Handle first = system.handle(0);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  // Particle 2 of 4 has a NaN position: the default handler throws after 0 and 1 were added.
+  const std::string message = invalid_argument_of([&] {
+    (void)system.spawn_burst(4, [&](std::size_t k) {
+      return std::tuple{Vector3<float>{float(k), k == 2 ? nan : 0.0f, 0}, Vector3<float>{}};
+    });
+  });
+  CHECK(message.find("spawn: argument 'position'") != std::string::npos);
+  CHECK(system.size() == 3);
+  CHECK(same_particles(system, before));
+  // The generator itself throws at particle 3.
+  bool thrown = false;
+  try {
+    (void)system.spawn_burst(5, [&](std::size_t k) {
+      if (k == 3) throw std::runtime_error("generator");
+      return std::tuple{Vector3<float>{float(k), 1, 0}, Vector3<float>{}};
+    });
+  } catch (const std::runtime_error&) {
+    thrown = true;
+  }
+  CHECK(thrown);
+  CHECK(system.size() == 3);
+  CHECK(same_particles(system, before));
+  // The handles of the particles that were there still find them; a burst that succeeds
+  // adds its particles after them.
+  CHECK(system.find(first) == std::optional<std::size_t>(0));
+  CHECK(system.spawn_burst(2, [](std::size_t k) {
+    return std::tuple{Vector3<float>{float(k), 2, 0}, Vector3<float>{}};
+  }) == 2);
+  CHECK(system.size() == 5);
+  CHECK(system.position(4) == Vector3<float>{1, 2, 0});
+}
+
+TEST_CASE_TEMPLATE("the positions relative to a camera refuse a non-finite origin and write nothing",
+                   S, float, Precision<float, double>, Precision<float, Compensated<float>>) {
+  using Value = position_value_t<S>;
+  ParticleSystem<S> system;
+  system.spawn(Vector3<Value>{Value(1e6), Value(2), Value(-3)}, Vector3<float>{});
+  system.spawn(Vector3<Value>{Value(-5), Value(1e6), Value(7)}, Vector3<float>{});
+  Particle<S> particle;
+  particle.set_position(Vector3<Value>{Value(1e6), Value(2), Value(-3)});
+  const Vector3<Value> good{Value(1e6), Value(0), Value(0)};
+  const Vector3<float> unwritten{7.0f, 7.0f, 7.0f};
+  for (const Value bad : {std::numeric_limits<Value>::quiet_NaN(),
+                          std::numeric_limits<Value>::infinity(),
+                          -std::numeric_limits<Value>::infinity()}) {
+    for (int axis = 0; axis < 3; ++axis) {
+      Vector3<Value> origin = good;
+      (axis == 0 ? origin.x : axis == 1 ? origin.y : origin.z) = bad;
+      std::vector<Vector3<float>> buffer(2, unwritten);
+      CHECK(invalid_argument_of([&] { system.positions_relative_to(origin, buffer); })
+                .find("positions_relative_to: argument 'origin'") != std::string::npos);
+      CHECK(buffer == std::vector<Vector3<float>>(2, unwritten));
+      CHECK(invalid_argument_of([&] { (void)system.position_relative_to(1, origin); })
+                .find("position_relative_to: argument 'origin'") != std::string::npos);
+      CHECK(invalid_argument_of([&] { (void)particle.position_relative_to(origin); })
+                .find("position_relative_to: argument 'origin'") != std::string::npos);
+    }
+  }
+  // A finite origin is taken.
+  std::vector<Vector3<float>> buffer(2, unwritten);
+  system.positions_relative_to(good, buffer);
+  CHECK(buffer[0] == Vector3<float>{0, 2, -3});
+  CHECK(buffer[0] == particle.position_relative_to(good));
+}

@@ -155,10 +155,15 @@ class BasicParticle {
   /// The position relative to `origin` (a camera), as float numbers (metres): computed from
   /// the whole stored position, and exact wherever the true offset is a float. T = real gives
   /// it in the arithmetic's own type, as a force generator sees it (forces::relative_to).
+  /// A non-finite origin is a contract violation, checked when POINTMASS_CHECKS is on (then
+  /// reported, and the result is zero).
   template <Real T = float>
   POINTMASS_HD constexpr Vector3<T> position_relative_to(
-      const Vector3<position_type>& origin) const noexcept {
+      const Vector3<position_type>& origin) const noexcept(!POINTMASS_HOST_CHECKS) {
     const Vector3<position_value> o = raw(origin);
+#if POINTMASS_HOST_CHECKS
+    if (!detail::check_finite("position_relative_to", "origin", o)) return {};
+#endif
     if constexpr (Storage::compensated) {
       return {Storage::template relative<T>(position_.x, position_error_.x, o.x),
               Storage::template relative<T>(position_.y, position_error_.y, o.y),

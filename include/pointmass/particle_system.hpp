@@ -236,22 +236,40 @@ class ParticleSystem
   /// generator(k) returns the arguments of a spawn as a tuple-like value (a std::pair of
   /// position and velocity, a std::tuple with the user columns' values after them) or a
   /// particle_type. Returns how many were added (a rejected one is reported and skipped);
-  /// they are the last ones, [size() - returned, size()), until the next removal.
+  /// they are the last ones, [size() - returned, size()), until the next removal. If the
+  /// report of a rejected one throws (the default handler) or the generator throws, the
+  /// particles this call added are removed again before the exception leaves: the system
+  /// holds what it held before the call (its capacity may have grown).
   template <class Generator>
   std::size_t spawn_burst(std::size_t count, Generator&& generator) {
     State::make_room(count);
-    std::size_t spawned = 0;
-    for (std::size_t k = 0; k < count; ++k) {
-      decltype(auto) made = generator(k);
-      std::size_t i;
-      if constexpr (std::is_convertible_v<decltype(made), const particle_type&>) {
-        i = spawn(static_cast<const particle_type&>(made));
-      } else {
-        i = std::apply([&](const auto&... arguments) { return spawn(arguments...); }, made);
+    const std::size_t before = size();
+    const auto spawn_all = [&] {
+      std::size_t spawned = 0;
+      for (std::size_t k = 0; k < count; ++k) {
+        decltype(auto) made = generator(k);
+        std::size_t i;
+        if constexpr (std::is_convertible_v<decltype(made), const particle_type&>) {
+          i = spawn(static_cast<const particle_type&>(made));
+        } else {
+          i = std::apply([&](const auto&... arguments) { return spawn(arguments...); }, made);
+        }
+        if (i != npos) ++spawned;
       }
-      if (i != npos) ++spawned;
+      return spawned;
+    };
+#if POINTMASS_HAS_EXCEPTIONS
+    try {
+      return spawn_all();
+    } catch (...) {
+      // The last particles are this call's: removing the last moves no other particle.
+      while (size() > before) State::remove(size() - 1);
+      throw;
     }
-    return spawned;
+#else
+    static_cast<void>(before);
+    return spawn_all();
+#endif
   }
 
   /// Removes particle `index` by moving the last particle into its place (order not kept).

@@ -52,18 +52,24 @@ class SystemHandOff : public Base {
   /// Particle i's position relative to `origin` (a camera), as float: from the whole
   /// stored position, exact wherever the true offset is a float (precision.hpp). T = R gives
   /// it in the arithmetic's own type, as a force generator sees it (forces::relative_to).
+  /// An index out of range or a non-finite origin is a contract violation, checked when
+  /// POINTMASS_CHECKS is on (then reported, and the result is zero).
   template <Real T = float>
   Vector3<T> position_relative_to(std::size_t i, const Vector3<position_value>& origin) const
       noexcept(!POINTMASS_HOST_CHECKS) {
     if (!this->valid_index("position_relative_to", i)) return {};
+#if POINTMASS_HOST_CHECKS
+    if (!detail::check_finite("position_relative_to", "origin", origin)) return {};
+#endif
     return Base::template relative<T>(this->arrays(), i, origin);
   }
   /// Every particle's position relative to `origin`, as float, into `buffer` (at least
-  /// size() elements; element i for particle i): what a renderer uploads. A buffer too small
-  /// is reported and nothing is written.
+  /// size() elements; element i for particle i): what a renderer uploads. A non-finite
+  /// origin or a buffer too small is reported and nothing is written.
   void positions_relative_to(const Vector3<position_value>& origin,
                              std::span<Vector3<float>> buffer) const {
-    if (!detail::check_buffer("positions_relative_to", "buffer", buffer.size(), this->size())) {
+    if (!detail::check_finite("positions_relative_to", "origin", origin) ||
+        !detail::check_buffer("positions_relative_to", "buffer", buffer.size(), this->size())) {
       return;
     }
     const typename Base::Arrays a = this->arrays();
