@@ -16,9 +16,11 @@
 // only Base's arrays(), size(), valid_index() and its copy-out of positions).
 #pragma once
 
+#include <concepts>
 #include <cstddef>
 #include <span>
 #include <type_traits>
+#include <utility>
 
 #include "../config.hpp"
 #include "../detail/validate.hpp"
@@ -37,15 +39,18 @@ class SystemHandOff : public Base {
   /// out[i * stride + 2] (stride >= 3: 3 packed, more for interleaved vertices; pass
   /// buffer.subspan(offset) to start elsewhere), converted to T. `out` needs
   /// (size() - 1) * stride + 3 elements; a shorter one is reported and nothing is written.
+  /// T is a floating-point type: an integer cannot hold every position, and converting one
+  /// beyond its range is undefined, so such a buffer does not compile.
   template <class T>
-    requires std::is_arithmetic_v<T>
+    requires std::floating_point<T>
   void copy_positions(std::span<T> out, std::size_t stride = 3) const {
     this->copy_strided("copy_positions", R(1), out, stride);
   }
   /// Copies the positions into vectors with x, y, z members (glm::vec3, ...): out[i] for
-  /// particle i; `out` needs size() elements.
+  /// particle i; `out` needs size() elements. Their members are floating-point numbers.
   template <class V>
-    requires(!std::is_arithmetic_v<V> && requires(V& v) { v.x = v.y = v.z; })
+    requires(!std::is_arithmetic_v<V> && requires(V& v) { v.x = v.y = v.z; } &&
+             std::floating_point<std::remove_cvref_t<decltype(std::declval<V&>().x)>>)
   void copy_positions(std::span<V> out) const {
     this->copy_vectors("copy_positions", R(1), out);
   }

@@ -15,9 +15,11 @@
 // only Base's arrays(), size(), valid_index() and its copy-out of positions).
 #pragma once
 
+#include <concepts>
 #include <cstddef>
 #include <span>
 #include <type_traits>
+#include <utility>
 
 #include "../config.hpp"
 #include "../detail/validate.hpp"
@@ -60,7 +62,7 @@ class SystemInterpolation : public Base {
   /// As copy_positions (system/hand_off.hpp), with the positions at the fraction alpha of
   /// the last step.
   template <class T>
-    requires(Base::Layout::has_interpolation && std::is_arithmetic_v<T>)
+    requires(Base::Layout::has_interpolation && std::floating_point<T>)
   void copy_interpolated_positions(R alpha, std::span<T> out, std::size_t stride = 3) const {
     if (detail::check_fraction("copy_interpolated_positions", "alpha", alpha)) {
       this->copy_strided("copy_interpolated_positions", alpha, out, stride);
@@ -68,7 +70,8 @@ class SystemInterpolation : public Base {
   }
   template <class V>
     requires(Base::Layout::has_interpolation && !std::is_arithmetic_v<V> &&
-             requires(V& v) { v.x = v.y = v.z; })
+             requires(V& v) { v.x = v.y = v.z; } &&
+             std::floating_point<std::remove_cvref_t<decltype(std::declval<V&>().x)>>)
   void copy_interpolated_positions(R alpha, std::span<V> out) const {
     if (detail::check_fraction("copy_interpolated_positions", "alpha", alpha)) {
       this->copy_vectors("copy_interpolated_positions", alpha, out);
