@@ -2,9 +2,11 @@
 // ParticleSystem's contracts and size arithmetic: impossible capacities are refused without
 // changing anything, indices and ranges are checked (this executable is built with
 // POINTMASS_ENABLE_CHECKS), a copy is steppable through arrays(), infinite lifetimes never
-// expire, and a zero step leaves a system and a Particle in the same state.
+// expire, a zero step leaves a system and a Particle in the same state, and the force
+// generators refuse a bad duration.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -457,4 +459,37 @@ TEST_CASE_TEMPLATE("the positions relative to a camera refuse a non-finite origi
   system.positions_relative_to(good, buffer);
   CHECK(buffer[0] == Vector3<float>{0, 2, -3});
   CHECK(buffer[0] == particle.position_relative_to(good));
+}
+
+TEST_CASE_TEMPLATE("a negative, NaN or infinite duration is reported by update_force, apply and "
+                   "update_forces, and no force is added", R, float, double) {
+  const forces::Gravity<R> gravity(Vector3<R>{R(0), R(-10), R(0)});
+  const forces::Drag<R> drag(R(1), R(0));
+  Particle<R> particle;
+  particle.set_velocity({R(1), R(0), R(0)});
+  forces::ForceRegistry<Particle<R>, forces::Gravity<R>> registry;
+  forces::Gravity<R> registered(Vector3<R>{R(0), R(-10), R(0)});
+  registry.add(particle, registered);
+  const std::array<Vector3<R>, 2> positions{};
+  const std::array<Vector3<R>, 2> velocities{{{R(1), R(0), R(0)}, {R(0), R(2), R(0)}}};
+  std::array<Vector3<R>, 2> f{};
+  forces::SpanBodies<R> bodies{positions, velocities, {}, f};
+  for (const R bad : {R(-1), -std::numeric_limits<R>::denorm_min(),
+                      std::numeric_limits<R>::quiet_NaN(), std::numeric_limits<R>::infinity()}) {
+    CAPTURE(bad);
+    CHECK(invalid_argument_of([&] { forces::update_force(gravity, particle, bad); })
+              .find("forces::update_force: argument 'duration'") != std::string::npos);
+    CHECK(invalid_argument_of([&] { forces::apply(drag, bodies, bad); })
+              .find("forces::apply: argument 'duration'") != std::string::npos);
+    CHECK(invalid_argument_of([&] { registry.update_forces(bad); })
+              .find("ForceRegistry::update_forces: argument 'duration'") != std::string::npos);
+    CHECK(particle.force_accumulator() == Vector3<R>{});
+    CHECK(f == std::array<Vector3<R>, 2>{});
+  }
+  // Zero and a positive duration are taken.
+  forces::update_force(gravity, particle, R(0));
+  registry.update_forces(R(0.5));
+  CHECK(particle.force_accumulator() == Vector3<R>{R(0), R(-20), R(0)});
+  forces::apply(drag, bodies, R(0.5));
+  CHECK(f[1] == Vector3<R>{R(0), R(-2), R(0)});
 }

@@ -44,6 +44,9 @@ template <class G, class B>
   requires HasUpdateForce<G, B> ||
            (PlainBody<B, typename B::real> && FieldGenerator<G, typename B::real>)
 constexpr void update_force(G& generator, B& body, typename B::real duration) {
+#if POINTMASS_CHECKS
+  if (!pointmass::detail::check_duration("forces::update_force", duration)) return;
+#endif
   if constexpr (HasUpdateForce<G, B>) {
     generator.update_force(body, duration);
   } else {
@@ -59,6 +62,9 @@ constexpr void update_force(G& generator, B& body, typename B::real duration) {
 /// are added unchecked.
 template <Bodies B, FieldGenerator<typename B::real> G>
 constexpr void apply(const G& generator, B& bodies, typename B::real duration) {
+#if POINTMASS_CHECKS
+  if (!pointmass::detail::check_duration("forces::apply", duration)) return;
+#endif
   if (!detail::valid_bodies(bodies, "forces::apply")) return;
   const std::size_t n = bodies.size();
   const auto force_on = [&](std::size_t i) {

@@ -137,8 +137,12 @@ class ForceRegistry {
 
   /// Asks every registered generator to add its force to its particle for a step of
   /// `duration`: the known types first (in the order of Known...), then the others, each in
-  /// the order they were added.
+  /// the order they were added. A negative, NaN or infinite duration is a contract
+  /// violation, checked when POINTMASS_CHECKS is on: reported once, and no force is added.
   void update_forces(real duration) {
+#if POINTMASS_CHECKS
+    if (!pointmass::detail::check_duration("ForceRegistry::update_forces", duration)) return;
+#endif
     const Pass pass(*this);
     std::apply([duration](auto&... entries) { (update_all(entries, duration), ...); }, known_);
     update_all(erased_, duration);
