@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -492,4 +493,38 @@ TEST_CASE_TEMPLATE("a negative, NaN or infinite duration is reported by update_f
   CHECK(particle.force_accumulator() == Vector3<R>{R(0), R(-20), R(0)});
   forces::apply(drag, bodies, R(0.5));
   CHECK(f[1] == Vector3<R>{R(0), R(-2), R(0)});
+}
+
+TEST_CASE("damped_oscillator reports an argument outside its domain and returns the state it got") {
+  const Vector3<double> x0{1, 0, 0}, v0{0, 1, 0};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  struct Bad {
+    double w0_squared, gamma;
+    Vector3<double> x, v;
+    double t;
+    const char* argument;
+  };
+  const Bad cases[] = {{-1, 0, x0, v0, 1, "w0_squared"}, {nan, 0, x0, v0, 1, "w0_squared"},
+                       {inf, 0, x0, v0, 1, "w0_squared"}, {1, -1, x0, v0, 1, "gamma"},
+                       {1, nan, x0, v0, 1, "gamma"},      {1, 0, {nan, 0, 0}, v0, 1, "x0"},
+                       {1, 0, x0, {0, inf, 0}, 1, "v0"},  {1, 0, x0, v0, -1, "t"},
+                       {1, 0, x0, v0, nan, "t"},          {1, 0, x0, v0, inf, "t"}};
+  for (const Bad& bad : cases) {
+    CAPTURE(bad.argument);
+    CHECK(invalid_argument_of([&] {
+            (void)forces::damped_oscillator(bad.w0_squared, bad.gamma, bad.x, bad.v, bad.t);
+          }).find(std::string("forces::damped_oscillator: argument '") + bad.argument + "'") !=
+          std::string::npos);
+  }
+  // With a handler that returns, the result is the state given.
+  const ContractHandler previous = set_contract_handler([](const ContractViolation&) {});
+  const auto s = forces::damped_oscillator(-1.0, 0.0, x0, v0, 1.0);
+  set_contract_handler(previous);
+  CHECK(s.position == x0);
+  CHECK(s.velocity == v0);
+  // Inside the domain, undamped with w0 = 1, from (1, 0, 0) at rest: x = cos t, v = -sin t.
+  const auto quarter = forces::damped_oscillator(1.0, 0.0, x0, Vector3<double>{}, 0.5);
+  CHECK(quarter.position.x == doctest::Approx(std::cos(0.5)).epsilon(1e-15));
+  CHECK(quarter.velocity.x == doctest::Approx(-std::sin(0.5)).epsilon(1e-15));
 }

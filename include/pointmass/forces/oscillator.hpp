@@ -44,9 +44,20 @@ struct OscillatorState {
 /// cancellation), and sinh(lambda t) / lambda through expm1 when lambda t is small. No NaN for
 /// finite input and any t >= 0 while w0^2 |x0|, gamma |x0|, gamma |v0| and the phase w0 t are
 /// below the largest R (a phase beyond it, 3e38 radians in float, has no digits left).
+/// An argument outside its domain (w0^2 or gamma negative, NaN or infinite; x0 or v0 not
+/// finite; t negative, NaN or infinite) is a contract violation, checked when
+/// POINTMASS_CHECKS is on: reported, naming it, and the result is (x0, v0).
 template <Real R>
 constexpr OscillatorState<R> damped_oscillator(R w0_squared, R gamma, const Vector3<R>& x0,
-                                               const Vector3<R>& v0, R t) noexcept {
+                                               const Vector3<R>& v0,
+                                               R t) noexcept(!POINTMASS_HOST_CHECKS);
+
+namespace detail {
+/// damped_oscillator without its checks: the generators below call it with parameters their
+/// setters have validated (and k / m, c / m beyond the range are their documented limit).
+template <Real R>
+constexpr OscillatorState<R> oscillate(R w0_squared, R gamma, const Vector3<R>& x0,
+                                       const Vector3<R>& v0, R t) noexcept {
   if (!(t > R(0))) return {x0, v0};
   const R w0 = real_sqrt(w0_squared);
   R ec;  // e^(-gamma t) C
@@ -77,6 +88,24 @@ constexpr OscillatorState<R> damped_oscillator(R w0_squared, R gamma, const Vect
     es = decay * t;
   }
   return {x0 * ec + (v0 + x0 * gamma) * es, v0 * ec - (x0 * w0_squared + v0 * gamma) * es};
+}
+}  // namespace detail
+
+template <Real R>
+constexpr OscillatorState<R> damped_oscillator(R w0_squared, R gamma, const Vector3<R>& x0,
+                                               const Vector3<R>& v0,
+                                               R t) noexcept(!POINTMASS_HOST_CHECKS) {
+#if POINTMASS_HOST_CHECKS
+  constexpr const char* function = "forces::damped_oscillator";
+  if (!pointmass::detail::check_non_negative(function, "w0_squared", w0_squared) ||
+      !pointmass::detail::check_non_negative(function, "gamma", gamma) ||
+      !pointmass::detail::check_finite(function, "x0", x0) ||
+      !pointmass::detail::check_finite(function, "v0", v0) ||
+      !pointmass::detail::check_duration(function, "t", t)) {
+    return {x0, v0};
+  }
+#endif
+  return detail::oscillate(w0_squared, gamma, x0, v0, t);
 }
 
 /// What both stiff springs share: a damped spring of rest length 0 from a body to a fixed
@@ -123,7 +152,7 @@ class StiffSpringParameters {
   /// damped_oscillator's.
   constexpr OscillatorState<R> exact_state(const Vector3<R>& p, const Vector3<R>& v,
                                            R inverse_mass, R duration) const noexcept {
-    OscillatorState<R> s = damped_oscillator(k_ * inverse_mass, c_ * inverse_mass / R(2),
+    OscillatorState<R> s = detail::oscillate(k_ * inverse_mass, c_ * inverse_mass / R(2),
                                              p - anchor_, v, duration);
     s.position += anchor_;
     return s;
@@ -171,7 +200,7 @@ class StiffSpring : public StiffSpringParameters<R> {
     OscillatorState<R> s;
     if (w0_squared * duration * duration >= R(1)) {
       const Vector3<R> rest = this->anchor_ + a / w0_squared;
-      s = damped_oscillator(w0_squared, this->c_ * inverse_mass / R(2), body.position() - rest,
+      s = detail::oscillate(w0_squared, this->c_ * inverse_mass / R(2), body.position() - rest,
                             body.velocity(), duration);
       s.position += rest;
     } else {
@@ -227,7 +256,7 @@ class PositionOnlyStiffSpring : public StiffSpringParameters<R> {
         gamma * duration < detail::short_step<R>) {
       return -(x * this->k_ + v * this->c_) / R(2);
     }
-    const OscillatorState<R> s = damped_oscillator(w0_squared, gamma, x, v, duration);
+    const OscillatorState<R> s = detail::oscillate(w0_squared, gamma, x, v, duration);
     const Vector3<R> mean_acceleration = ((s.position - x) / duration - v) / duration;
     return mean_acceleration / inverse_mass;
   }
