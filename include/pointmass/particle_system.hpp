@@ -393,7 +393,10 @@ class ParticleSystem
   void arrays_changed() noexcept { State::forget_retention(); }
 
   /// What every particle's step of `duration` shares: computes the uniform damping factors
-  /// (the one power function of a step with uniform per-second damping).
+  /// (the one power function of a step with uniform per-second damping). It does not check
+  /// the duration: call it once begin_step(duration) has accepted it (and said there is work),
+  /// as step does. Likewise step_particle does not check its index: the loop's bounds are
+  /// [0, size()), or step_range's, which checks them.
   using State::step_parameters;
   /// True if a step of `duration` has work to do; reports a bad duration (when checked).
   using State::begin_step;
