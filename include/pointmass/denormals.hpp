@@ -25,12 +25,14 @@
 // is zero instead (a Particle and a ParticleSystem stepped under the same modes still agree
 // bit for bit). The modes belong to a thread: each worker of a thread pool of the caller's
 // needs a guard of its own. pointmass::step on a standard execution policy (parallel.hpp)
-// needs none: with libstdc++ it runs on TBB, whose tasks take the modes of the thread that
-// started them, so a guard around the call covers its workers. Supported with g++ and clang
+// needs none: it runs every chunk under the modes of the thread that called it (and gives
+// each worker its own back after), so a guard around the call covers its workers, whatever
+// modes the pool's threads had. Supported with g++ and clang
 // on x86-64, and on 32-bit x86 with SSE (the MXCSR register); elsewhere `supported` is false
 // and the guard does nothing.
 //
-// Owns: FlushDenormals.
+// Owns: FlushDenormals, and detail::SameFlushModes (a chunk of a parallel step under the
+// calling thread's modes).
 // Must not include: anything but config.hpp.
 #pragma once
 
@@ -45,28 +47,11 @@
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
-/// While it lives, the calling thread flushes subnormal results to zero and reads subnormal
-/// operands as zero (see the file comment); its destructor restores the previous modes.
-class FlushDenormals {
- public:
-  /// True where the guard can set the modes (x86 with SSE, g++ or clang).
-  static constexpr bool supported = POINTMASS_DETAIL_MXCSR == 1;
+namespace detail {
 
-  FlushDenormals() noexcept : saved_(read() & flush_bits) { write(read() | flush_bits); }
-  /// Restores the two modes alone: the exception flags raised meanwhile, and any other change
-  /// to the control register (rounding, traps), stay.
-  ~FlushDenormals() { write((read() & ~flush_bits) | saved_); }
-  FlushDenormals(const FlushDenormals&) = delete;
-  FlushDenormals& operator=(const FlushDenormals&) = delete;
-
-  /// True when the calling thread flushes subnormals now (both modes on), whether by a guard
-  /// or otherwise.
-  [[nodiscard]] static bool active() noexcept {
-    return supported && (read() & flush_bits) == flush_bits;
-  }
-
- private:
-  // MXCSR bit 15: flush to zero; bit 6: denormals are zero.
+/// The two modes in the x86 SSE control register (MXCSR): bit 15, flush to zero, and bit 6,
+/// denormals are zero. Where it does not exist, reads give 0 and writes do nothing.
+struct FlushModeBits {
   static constexpr unsigned flush_bits = (1u << 15) | (1u << 6);
 
   static unsigned read() noexcept {
@@ -86,7 +71,63 @@ class FlushDenormals {
     static_cast<void>(csr);
 #endif
   }
+  /// The calling thread's two modes (their bits; 0 where unsupported).
+  static unsigned modes() noexcept { return read() & flush_bits; }
+};
 
+/// While it lives, the calling thread takes the two flush modes `modes` (FlushModeBits::
+/// modes() of another thread) and keeps everything else of its control register; then its
+/// own two come back. parallel.hpp runs every chunk of a parallel step under the modes of the
+/// thread that called the step, whatever modes the worker that runs it had: a thread pool
+/// need not pass them on (TBB's workers, for one, keep the modes they were given when the
+/// pool first ran), and the step's results are then the serial step's on every thread.
+class SameFlushModes {
+ public:
+  explicit SameFlushModes(unsigned modes) noexcept
+      : saved_(FlushModeBits::modes()), changed_(saved_ != modes) {
+    if (changed_) {
+      FlushModeBits::write((FlushModeBits::read() & ~FlushModeBits::flush_bits) | modes);
+    }
+  }
+  ~SameFlushModes() {
+    if (changed_) {
+      FlushModeBits::write((FlushModeBits::read() & ~FlushModeBits::flush_bits) | saved_);
+    }
+  }
+  SameFlushModes(const SameFlushModes&) = delete;
+  SameFlushModes& operator=(const SameFlushModes&) = delete;
+
+ private:
+  unsigned saved_;
+  bool changed_;
+};
+
+}  // namespace detail
+
+/// While it lives, the calling thread flushes subnormal results to zero and reads subnormal
+/// operands as zero (see the file comment); its destructor restores the previous modes.
+class FlushDenormals {
+ public:
+  /// True where the guard can set the modes (x86 with SSE, g++ or clang).
+  static constexpr bool supported = POINTMASS_DETAIL_MXCSR == 1;
+
+  FlushDenormals() noexcept : saved_(Bits::modes()) {
+    Bits::write(Bits::read() | Bits::flush_bits);
+  }
+  /// Restores the two modes alone: the exception flags raised meanwhile, and any other change
+  /// to the control register (rounding, traps), stay.
+  ~FlushDenormals() { Bits::write((Bits::read() & ~Bits::flush_bits) | saved_); }
+  FlushDenormals(const FlushDenormals&) = delete;
+  FlushDenormals& operator=(const FlushDenormals&) = delete;
+
+  /// True when the calling thread flushes subnormals now (both modes on), whether by a guard
+  /// or otherwise.
+  [[nodiscard]] static bool active() noexcept {
+    return supported && Bits::modes() == Bits::flush_bits;
+  }
+
+ private:
+  using Bits = detail::FlushModeBits;
   unsigned saved_;  // the two modes' bits as they were
 };
 

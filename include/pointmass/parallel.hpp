@@ -10,7 +10,7 @@
 // touches threads. (Defining POINTMASS_ENABLE_PARALLEL before particle_system.hpp, the former
 // opt-in, still includes this header for one more release.)
 //
-// Must not include: anything but particle_system.hpp and the standard library.
+// Must not include: anything but particle_system.hpp, denormals.hpp and the standard library.
 #pragma once
 
 #include <algorithm>
@@ -20,6 +20,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "denormals.hpp"
 #include "particle_system.hpp"
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
@@ -74,8 +75,9 @@ class CountingIterator {
 }  // namespace detail
 
 namespace detail {
-/// The particles' step on `policy`, in chunks of 16,384 (each through the vectorised loop);
-/// false when there was nothing to do (see begin_step).
+/// The particles' step on `policy`, in chunks of 16,384 (each through the vectorised loop),
+/// each under the calling thread's flush-to-zero modes (denormals.hpp), on whichever thread
+/// runs it; false when there was nothing to do (see begin_step).
 template <class ExecutionPolicy, class System, class R>
 bool step_chunks(ExecutionPolicy&& policy, System& system, R duration) {
   if (!system.begin_step(duration)) return false;
@@ -84,8 +86,10 @@ bool step_chunks(ExecutionPolicy&& policy, System& system, R duration) {
   const typename System::StepParameters parameters = system.step_parameters(duration);
   const std::size_t size = system.size();
   const std::size_t chunks = (size + chunk - 1) / chunk;
+  const unsigned modes = FlushModeBits::modes();
   std::for_each(std::forward<ExecutionPolicy>(policy), CountingIterator(0),
                 CountingIterator(chunks), [&](std::size_t c) {
+                  const SameFlushModes same_modes(modes);
                   const std::size_t begin = c * chunk;
                   System::step_range(arrays, begin, std::min(begin + chunk, size), parameters);
                 });
@@ -112,8 +116,9 @@ struct SystemAccess {
 
 /// Steps `system` by `duration` with the execution policy `policy` (for example
 /// std::execution::par_unseq): the particles are split into chunks of 16,384, each stepped
-/// by the vectorised loop; expiry (Lifetime) then runs on the calling thread. The results
-/// are those of system.step(duration), bit for bit. S is the system's first argument: a Real,
+/// by the vectorised loop, under the calling thread's flush-to-zero modes (FlushDenormals)
+/// on every thread; expiry (Lifetime) then runs on the calling thread. The results are those
+/// of system.step(duration), bit for bit. S is the system's first argument: a Real,
 /// or a Precision (precision.hpp) whose positions are stored wider; `duration` is in the
 /// system's arithmetic type (`real`), as system.step's is.
 template <class ExecutionPolicy, class S, class D, class P, class... Features>

@@ -6,11 +6,13 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <execution>
 #include <limits>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "system_support.hpp"
@@ -115,18 +117,41 @@ TEST_CASE("a parallel step keeps each particle's d^t for its step length, as the
   CHECK(same);
 }
 
-TEST_CASE("a parallel step under FlushDenormals flushes on every thread, as the serial step") {
-  // With libstdc++ the policies run on TBB, whose tasks take the floating-point modes of the
-  // thread that started them: a guard around the call covers the workers too.
-  if (!FlushDenormals::supported) return;
+// Skipped (and reported so) where there are no modes to set, or one hardware thread: there
+// "every thread" is the calling one, and the test would pass without a worker.
+TEST_CASE("a parallel step under FlushDenormals flushes on every thread, as the serial step" *
+          doctest::skip(!FlushDenormals::supported || std::thread::hardware_concurrency() < 2)) {
+  // pointmass::step runs every chunk under the calling thread's modes, so a guard around the
+  // call covers the workers too. TBB's workers keep the modes they had when its pool first
+  // ran: the pool runs here once without the guard first, so that its workers do not flush
+  // by themselves and the step has to give them the caller's modes.
+  if (!FlushDenormals::supported) return;  // (only run with --no-skip)
   constexpr std::size_t count = 16384 * 16;  // 16 chunks, for both threads to take some
   const float tiny = std::numeric_limits<float>::min() / 64.0f;
   ParticleSystem<float> serial(count);
   serial.set_damping(0.9f);
   for (std::size_t i = 0; i < count; ++i) serial.spawn({1.0f, 2.0f, 3.0f}, {tiny, 1.0f, -tiny});
   ParticleSystem<float> parallel = serial;
+  std::vector<float> warm_up(count, 1.0f);
+  std::for_each(std::execution::par_unseq, warm_up.begin(), warm_up.end(),
+                [](float& x) { x *= 2.0f; });
+  REQUIRE_FALSE(FlushDenormals::active());
   {
     FlushDenormals flush;
+    // The precondition: a parallel algorithm over as many items runs on two threads or more
+    // here, so that a worker's modes are at stake. Each item notes its thread (one write per
+    // item: no synchronisation, as par_unseq requires); a few tries, should the first finish
+    // before a worker wakes. (Inside the guard: TBB may take the modes when first used.)
+    std::vector<std::thread::id> ran_on(count);
+    std::size_t threads = 0;
+    for (int attempt = 0; attempt < 20 && threads < 2; ++attempt) {
+      std::for_each(std::execution::par_unseq, ran_on.begin(), ran_on.end(),
+                    [](std::thread::id& id) { id = std::this_thread::get_id(); });
+      std::sort(ran_on.begin(), ran_on.end());
+      threads = static_cast<std::size_t>(std::unique(ran_on.begin(), ran_on.end()) - ran_on.begin());
+    }
+    CAPTURE(std::thread::hardware_concurrency());
+    REQUIRE(threads >= 2);
     serial.step(1.0f / 60.0f);
     pointmass::step(std::execution::par_unseq, parallel, 1.0f / 60.0f);
   }
