@@ -22,6 +22,26 @@ using pointmass::test::ulp_distance;
 // The bound the library states (docs/numerics.md), for d in [1e-3, 1] and t in [0, 1] s.
 constexpr long long stated_ulps = 4;
 
+/// The bits the split high parts may have: half of R's significand (exponential.hpp: 12 of
+/// float's 24, 26 of double's 53).
+template <class R>
+constexpr int half_significand = std::numeric_limits<R>::digits / 2;
+
+/// The significant bits of a finite x: the fewest k such that x is an integer below 2^k times
+/// a power of 2 (0 for 0). Counted by doubling the fraction of frexp: each step is exact.
+template <class R>
+int significant_bits(R x) {
+  int exponent = 0;
+  R fraction = std::frexp(std::fabs(x), &exponent);  // in [1/2, 1), or 0
+  int bits = 0;
+  while (fraction > R(0)) {
+    fraction *= R(2);
+    fraction -= std::floor(fraction);
+    ++bits;
+  }
+  return bits;
+}
+
 // Usable in constant expressions, and exact where it must be.
 static_assert(detail::exp(0.0f) == 1.0f && detail::exp(0.0) == 1.0);
 static_assert(detail::expm1(0.0f) == 0.0f && detail::expm1(0.0) == 0.0);
@@ -98,8 +118,21 @@ TEST_CASE_TEMPLATE("the split logarithm is ln d to half again the precision", R,
     const auto ln_d = detail::split_log(d);
     const long double exact = std::log(static_cast<long double>(d));
     const long double sum = static_cast<long double>(ln_d.hi) + static_cast<long double>(ln_d.lo);
-    // hi has half the significand: its low half is zero.
-    CHECK(detail::split_high(ln_d.hi) == ln_d.hi);
+    // hi has at most half the significand's bits (12 in float, 26 in double: exponential.hpp),
+    // and so does a step length's high part split the same way: their product, x_hi, is then
+    // exact (24 bits fit float's 24, 52 double's 53), which is what keeps x = t ln d free of
+    // an error growing with |x|. Exact: the product's rounding error, which fma computes
+    // exactly, is zero (the products here are far from the subnormals).
+    CHECK(significant_bits(ln_d.hi) <= half_significand<R>);
+    for (const R t : {R(1) / R(60), R(1) / R(30), R(0.1), R(1) / R(3), R(0.7), R(0.999)}) {
+      CAPTURE(t);
+      const R t_hi = detail::split_time(t).hi;
+      CHECK(significant_bits(t_hi) <= half_significand<R>);
+      const R x_hi = t_hi * ln_d.hi;
+      CHECK(std::fma(t_hi, ln_d.hi, -x_hi) == R(0));
+      CHECK(static_cast<long double>(t_hi) * static_cast<long double>(ln_d.hi) ==
+            static_cast<long double>(x_hi));
+    }
     // lo carries R's significand below hi's half: 1.5 significands in all (float 36 bits;
     // double 64, long double's). Checked to 10 bits beyond R's.
     CHECK(std::fabs(sum - exact) <=
@@ -122,6 +155,69 @@ TEST_CASE_TEMPLATE("e^x and e^x - 1 over the whole range: overflow, underflow, N
   }
   CAPTURE(worst);
   CHECK(worst <= stated_ulps);
+
+  // The sweep above stops short of both ends of the finite results (|x| <= 87.4 in float,
+  // 709.4 in double). The overflow edge: x across ln(largest finite) (float 88.72, double
+  // 709.78) and the clamp x_max (89, 710), every result finite or infinite as the oracle's.
+  // (ulp_distance puts infinity 1 from the largest finite value: the overflow is compared on
+  // its own.)
+  {
+    const long double from = sizeof(R) == 4 ? 88.5L : 709.5L;
+    long long worst_edge = 0;
+    int finite_near_top = 0;  // oracle finite and above half the largest finite value
+    int overflowed = 0;       // oracle infinite
+    for (int i = 0; i <= 20000; ++i) {
+      const R x = static_cast<R>(from + static_cast<long double>(i) / 20000);
+      CAPTURE(x);
+      const long double lx = static_cast<long double>(x);
+      const R expected = static_cast<R>(std::exp(lx));
+      const R expected_m1 = static_cast<R>(std::expm1(lx));
+      const R actual = detail::exp(x);
+      const R actual_m1 = detail::expm1(x);
+      if (std::isinf(expected) != std::isinf(actual) ||
+          std::isinf(expected_m1) != std::isinf(actual_m1)) {
+        CHECK(std::isinf(actual) == std::isinf(expected));
+        CHECK(std::isinf(actual_m1) == std::isinf(expected_m1));
+      }
+      const long long e = ulp_distance(actual, expected);
+      const long long m = ulp_distance(actual_m1, expected_m1);
+      worst_edge = e > worst_edge ? e : worst_edge;
+      worst_edge = m > worst_edge ? m : worst_edge;
+      overflowed += std::isinf(expected);
+      finite_near_top += !std::isinf(expected) && expected > std::numeric_limits<R>::max() / 2;
+    }
+    CAPTURE(worst_edge);
+    CHECK(worst_edge <= stated_ulps);
+    CHECK(overflowed > 1000);
+    CHECK(finite_near_top > 1000);
+  }
+  // The subnormal results: x from just above ln(smallest normal) (float -87.34, double
+  // -708.40) to below ln(smallest subnormal / 2) (float -103.97, double -745.13), where e^x
+  // rounds to 0. An ulp here is the smallest subnormal: the results round once (exp_from).
+  {
+    const long double from = sizeof(R) == 4 ? -104.0L : -745.2L;
+    const long double to = sizeof(R) == 4 ? -87.0L : -708.0L;
+    long long worst_band = 0;
+    int subnormal = 0;  // oracle subnormal
+    int zero = 0;       // oracle 0
+    for (int i = 0; i <= 40000; ++i) {
+      const R x = static_cast<R>(from + (to - from) * static_cast<long double>(i) / 40000);
+      CAPTURE(x);
+      const long double lx = static_cast<long double>(x);
+      const R expected = static_cast<R>(std::exp(lx));
+      const long long e = ulp_distance(detail::exp(x), expected);
+      const long long m = ulp_distance(detail::expm1(x), static_cast<R>(std::expm1(lx)));
+      worst_band = e > worst_band ? e : worst_band;
+      worst_band = m > worst_band ? m : worst_band;
+      subnormal += std::fpclassify(expected) == FP_SUBNORMAL;
+      zero += std::fpclassify(expected) == FP_ZERO;
+    }
+    CAPTURE(worst_band);
+    CHECK(worst_band <= 1);
+    CHECK(subnormal > 30000);
+    CHECK(zero > 50);
+  }
+
   CHECK(detail::exp(inf) == inf);
   CHECK(detail::exp(-inf) == R(0));
   CHECK(detail::expm1(inf) == inf);
@@ -145,7 +241,7 @@ TEST_CASE_TEMPLATE("pow_unit_scalar, a Particle's d^t, is pow_unit bit for bit",
     state = state * 1664525u + 1013904223u;
     return static_cast<R>(state >> 8) / static_cast<R>(1u << 24);
   };
-  int checked = 0;
+  int normal_below_one = 0;
   int subnormal_or_zero = 0;
   for (int i = 0; i < 200000; ++i) {
     const R d = i % 1000 == 0 ? R(0) : (i % 1000 == 1 ? R(1) : uniform());
@@ -156,12 +252,15 @@ TEST_CASE_TEMPLATE("pow_unit_scalar, a Particle's d^t, is pow_unit bit for bit",
     if (!same(expected, actual)) {
       CAPTURE(d);
       CAPTURE(t);
-      CHECK(actual == expected);
+      CHECK(same(actual, expected));  // bits: +0 and -0 differ
     }
     if (expected < std::numeric_limits<R>::min()) ++subnormal_or_zero;
-    ++checked;
+    if (expected >= std::numeric_limits<R>::min() && expected < R(1)) ++normal_below_one;
   }
-  CHECK(checked == 200000);
+  // Both roads are taken many times (the branch exists for float and double): d^t a normal
+  // number below 1 is the fast path's (but for x_hi within 1.4 of its lower edge, float;
+  // 8.4, double), a subnormal or zero d^t the fallback's.
+  CHECK(normal_below_one > 100000);
   if constexpr (!std::is_same_v<R, long double>) {
     CHECK(subnormal_or_zero > 1000);  // the fallback ran, not only the fast path
     // x_hi at the lower edge of the fast path (t ln d <= 0: the upper one is out of reach),

@@ -189,36 +189,88 @@ TEST_CASE("a fixed-step loop computes the damping factors once, and again only w
   CHECK(CountingPerSecond::factor_calls == 4);  // a zero step computes none
 }
 
+namespace {
+
+/// Damping policy D, counting the factors a Particle computes (D::factors, or D::scalar_factors
+/// where D has one, as a Particle calls them): CountingPerSecond for any policy. Its factors
+/// are D's, so a particle with it computes what one with D does.
+template <class D>
+struct CountingFactors {
+  static constexpr int order = D::order;
+  static constexpr bool exact_for_constant_acceleration = D::exact_for_constant_acceleration;
+  template <Real R>
+  using State = typename D::template State<R>;
+  static inline int factor_calls = 0;
+
+  template <Real R, class T>
+  static auto factors(const State<R>& state, const T& t) noexcept {
+    ++factor_calls;
+    return D::factors(state, t);
+  }
+  template <Real R, class T>
+    requires requires(const State<R>& state, const T& t) { D::scalar_factors(state, t); }
+  static auto scalar_factors(const State<R>& state, const T& t) noexcept {
+    ++factor_calls;
+    return D::scalar_factors(state, t);
+  }
+  template <class V, class A, class T, class F>
+  static constexpr V velocity(const V& v0, const A& a, const T& t, const F& f) noexcept {
+    return D::velocity(v0, a, t, f);
+  }
+};
+
+}  // namespace
+
 TEST_CASE_TEMPLATE("a repeated step length reuses the damping factors, a new length or damping does not",
                    D, damping::PerSecond, damping::AccelerateThenDamp, damping::Exact) {
   using R = float;
+  using Counting = CountingFactors<D>;
+  static_assert(DampingPolicy<Counting>);
+  static_assert(Particle<R, D>::caches_factors && Particle<R, Counting>::caches_factors);
   Particle<R, D> particle;
+  Particle<R, Counting> counted;  // the same steps, counting the factors it computes
   const Vector3<R> a{R(0), R(-9.8f), R(1)};
   Vector3<R> v{R(1), R(2), R(3)};
   particle.set_velocity(v);
   particle.set_acceleration(a);
-  // Each step against the policy's own factors computed afresh: equal bit for bit.
-  const auto step = [&](R t, R d) {
+  counted.set_velocity(v);
+  counted.set_acceleration(a);
+  Counting::factor_calls = 0;
+  // Each step against the policy's own factors computed afresh: equal bit for bit; `calls`
+  // is how many factors the counted particle has computed after the step.
+  const auto step = [&](R t, R d, int calls) {
     CAPTURE(t);
     CAPTURE(d);
     v = D::velocity(v, a, t, D::factors(typename D::template State<R>(d), t));
     particle.integrate(t);
+    counted.integrate(t);
     CHECK(particle.velocity() == v);
+    CHECK(counted.velocity() == v);
+    CHECK(Counting::factor_calls == calls);
   };
   particle.set_damping(R(0.5));
-  step(R(1) / R(60), R(0.5));
-  step(R(1) / R(60), R(0.5));
-  step(R(1) / R(30), R(0.5));
-  step(R(1) / R(60), R(0.5));
+  counted.set_damping(R(0.5));
+  step(R(1) / R(60), R(0.5), 1);
+  step(R(1) / R(60), R(0.5), 1);  // the same length: reused
+  step(R(1) / R(30), R(0.5), 2);  // a new length
+  step(R(1) / R(60), R(0.5), 3);  // the old length again: only the last one is kept
   particle.set_damping(R(0.05));
-  step(R(1) / R(60), R(0.05));
-  step(R(1) / R(60), R(0.05));
+  counted.set_damping(R(0.05));
+  step(R(1) / R(60), R(0.05), 4);  // a new damping, the same length
+  step(R(1) / R(60), R(0.05), 4);
   const Particle<R, D> copy = particle;  // a copy carries the kept factors with it
+  const Particle<R, Counting> counted_copy = counted;
   particle.set_damping(R(0.9));
-  step(R(1) / R(60), R(0.9));
+  counted.set_damping(R(0.9));
+  step(R(1) / R(60), R(0.9), 5);
+  const Vector3<R> copy_velocity =
+      D::velocity(copy.velocity(), a, R(1) / R(60),
+                  D::factors(typename D::template State<R>(R(0.05)), R(1) / R(60)));
   Particle<R, D> other = copy;
   other.integrate(R(1) / R(60));
-  CHECK(other.velocity() == D::velocity(copy.velocity(), a, R(1) / R(60),
-                                        D::factors(typename D::template State<R>(R(0.05)),
-                                                   R(1) / R(60))));
+  CHECK(other.velocity() == copy_velocity);
+  Particle<R, Counting> counted_other = counted_copy;
+  counted_other.integrate(R(1) / R(60));
+  CHECK(counted_other.velocity() == copy_velocity);
+  CHECK(Counting::factor_calls == 5);  // the copy's kept factors, not the original's new ones
 }
