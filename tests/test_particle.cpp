@@ -189,42 +189,11 @@ TEST_CASE("a fixed-step loop computes the damping factors once, and again only w
   CHECK(CountingPerSecond::factor_calls == 4);  // a zero step computes none
 }
 
-namespace {
-
-/// Damping policy D, counting the factors a Particle computes (D::factors, or D::scalar_factors
-/// where D has one, as a Particle calls them): CountingPerSecond for any policy. Its factors
-/// are D's, so a particle with it computes what one with D does.
-template <class D>
-struct CountingFactors {
-  static constexpr int order = D::order;
-  static constexpr bool exact_for_constant_acceleration = D::exact_for_constant_acceleration;
-  template <Real R>
-  using State = typename D::template State<R>;
-  static inline int factor_calls = 0;
-
-  template <Real R, class T>
-  static auto factors(const State<R>& state, const T& t) noexcept {
-    ++factor_calls;
-    return D::factors(state, t);
-  }
-  template <Real R, class T>
-    requires requires(const State<R>& state, const T& t) { D::scalar_factors(state, t); }
-  static auto scalar_factors(const State<R>& state, const T& t) noexcept {
-    ++factor_calls;
-    return D::scalar_factors(state, t);
-  }
-  template <class V, class A, class T, class F>
-  static constexpr V velocity(const V& v0, const A& a, const T& t, const F& f) noexcept {
-    return D::velocity(v0, a, t, f);
-  }
-};
-
-}  // namespace
 
 TEST_CASE_TEMPLATE("a repeated step length reuses the damping factors, a new length or damping does not",
                    D, damping::PerSecond, damping::AccelerateThenDamp, damping::Exact) {
   using R = float;
-  using Counting = CountingFactors<D>;
+  using Counting = pointmass::test::CountingFactors<D>;
   static_assert(DampingPolicy<Counting>);
   static_assert(Particle<R, D>::caches_factors && Particle<R, Counting>::caches_factors);
   Particle<R, D> particle;

@@ -73,6 +73,9 @@ struct FlushModeBits {
   }
   /// The calling thread's two modes (their bits; 0 where unsupported).
   static unsigned modes() noexcept { return read() & flush_bits; }
+  /// Sets the calling thread's two modes to `modes` (bits of flush_bits), keeping the rest of
+  /// the register: exception flags raised meanwhile, rounding and traps.
+  static void set_modes(unsigned modes) noexcept { write((read() & ~flush_bits) | modes); }
 };
 
 /// While it lives, the calling thread takes the two flush modes `modes` (FlushModeBits::
@@ -85,14 +88,10 @@ class SameFlushModes {
  public:
   explicit SameFlushModes(unsigned modes) noexcept
       : saved_(FlushModeBits::modes()), changed_(saved_ != modes) {
-    if (changed_) {
-      FlushModeBits::write((FlushModeBits::read() & ~FlushModeBits::flush_bits) | modes);
-    }
+    if (changed_) FlushModeBits::set_modes(modes);
   }
   ~SameFlushModes() {
-    if (changed_) {
-      FlushModeBits::write((FlushModeBits::read() & ~FlushModeBits::flush_bits) | saved_);
-    }
+    if (changed_) FlushModeBits::set_modes(saved_);
   }
   SameFlushModes(const SameFlushModes&) = delete;
   SameFlushModes& operator=(const SameFlushModes&) = delete;
@@ -111,12 +110,10 @@ class FlushDenormals {
   /// True where the guard can set the modes (x86 with SSE, g++ or clang).
   static constexpr bool supported = POINTMASS_DETAIL_MXCSR == 1;
 
-  FlushDenormals() noexcept : saved_(Bits::modes()) {
-    Bits::write(Bits::read() | Bits::flush_bits);
-  }
+  FlushDenormals() noexcept : saved_(Bits::modes()) { Bits::set_modes(Bits::flush_bits); }
   /// Restores the two modes alone: the exception flags raised meanwhile, and any other change
   /// to the control register (rounding, traps), stay.
-  ~FlushDenormals() { Bits::write((Bits::read() & ~Bits::flush_bits) | saved_); }
+  ~FlushDenormals() { Bits::set_modes(saved_); }
   FlushDenormals(const FlushDenormals&) = delete;
   FlushDenormals& operator=(const FlushDenormals&) = delete;
 

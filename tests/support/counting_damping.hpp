@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// Test support: per-second damping that counts how often its per-step factors (the power
+// Test support: damping policies that count how often their per-step factors (the power
 // function) run, to see when a Particle or a ParticleSystem computes them and when it keeps
 // them. (It states no order or exactness: a user's policy need not, and is taken as first
 // order.)
@@ -9,22 +9,34 @@
 
 namespace pointmass::test {
 
-struct CountingPerSecond {
+/// Damping policy D, counting the factors a Particle or a ParticleSystem computes (D::factors,
+/// and D::scalar_factors where D has one, as they call them). Its factors are D's, so a
+/// particle with it computes what one with D does.
+template <class D>
+struct CountingFactors {
   template <Real R>
-  using State = damping::PerSecond::State<R>;
+  using State = typename D::template State<R>;
   template <Real R>
-  using Factors = damping::Retention<R>;
+  using Factors = typename D::template Factors<R>;
   static inline int factor_calls = 0;
 
   template <Real R, class T>
   static Factors<R> factors(const State<R>& state, const T& t) noexcept {
     ++factor_calls;
-    return damping::PerSecond::factors(state, t);
+    return D::factors(state, t);
+  }
+  template <Real R, class T>
+    requires requires(const State<R>& state, const T& t) { D::scalar_factors(state, t); }
+  static Factors<R> scalar_factors(const State<R>& state, const T& t) noexcept {
+    ++factor_calls;
+    return D::scalar_factors(state, t);
   }
   template <class V, class A, class T, class R>
   static constexpr V velocity(const V& v0, const A& a, const T& t, const Factors<R>& f) noexcept {
-    return damping::PerSecond::velocity(v0, a, t, f);
+    return D::velocity(v0, a, t, f);
   }
 };
+
+using CountingPerSecond = CountingFactors<damping::PerSecond>;
 
 }  // namespace pointmass::test
