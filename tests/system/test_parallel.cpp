@@ -138,15 +138,24 @@ TEST_CASE("a parallel step under FlushDenormals flushes on every thread, as the 
   REQUIRE_FALSE(FlushDenormals::active());
   {
     FlushDenormals flush;
-    // The precondition: a parallel algorithm over as many items runs on two threads or more
-    // here, so that a worker's modes are at stake. Each item notes its thread (one write per
-    // item: no synchronisation, as par_unseq requires); a few tries, should the first finish
-    // before a worker wakes. (Inside the guard: TBB may take the modes when first used.)
-    std::vector<std::thread::id> ran_on(count);
+    // The precondition: a parallel algorithm runs on two threads or more here, so that a
+    // worker's modes are at stake. Each item does some tens of microseconds of work (so that
+    // a worker wakes and takes some before the calling thread has done them all, also while
+    // other tests load the machine) and notes its thread: one write per item, no
+    // synchronisation, as par_unseq requires. A few tries. (Inside the guard.)
+    struct Item {
+      std::thread::id thread;
+      float work = 1.0f;
+    };
+    std::vector<Item> items(4096);
+    std::vector<std::thread::id> ran_on(items.size());
     std::size_t threads = 0;
     for (int attempt = 0; attempt < 20 && threads < 2; ++attempt) {
-      std::for_each(std::execution::par_unseq, ran_on.begin(), ran_on.end(),
-                    [](std::thread::id& id) { id = std::this_thread::get_id(); });
+      std::for_each(std::execution::par_unseq, items.begin(), items.end(), [](Item& item) {
+        for (int k = 0; k < 20000; ++k) item.work = item.work * 0.999999f + 1e-7f;
+        item.thread = std::this_thread::get_id();
+      });
+      for (std::size_t i = 0; i < items.size(); ++i) ran_on[i] = items[i].thread;
       std::sort(ran_on.begin(), ran_on.end());
       threads = static_cast<std::size_t>(std::unique(ran_on.begin(), ran_on.end()) - ran_on.begin());
     }
