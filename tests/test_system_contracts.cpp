@@ -15,6 +15,7 @@
 #include <span>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include <pointmass/pointmass.hpp>
@@ -404,6 +405,7 @@ TEST_CASE("spawn_burst takes its particles back when a rejected one's report thr
     });
   });
   CHECK(message.find("spawn: argument 'position'") != std::string::npos);
+  CHECK(message.find("(in spawn_burst, element 2)") != std::string::npos);
   CHECK(system.size() == 3);
   CHECK(same_particles(system, before));
   // The generator itself throws at particle 3.
@@ -427,6 +429,46 @@ TEST_CASE("spawn_burst takes its particles back when a rejected one's report thr
   }) == 2);
   CHECK(system.size() == 5);
   CHECK(system.position(4) == Vector3<float>{1, 2, 0});
+}
+
+namespace {
+std::vector<ContractViolation> burst_reports;
+}  // namespace
+
+TEST_CASE("spawn_burst names the element whose particle it rejects, and only inside the burst") {
+  ParticleSystem<float> system;
+  const float inf = std::numeric_limits<float>::infinity();
+  burst_reports.clear();
+  const ContractHandler previous =
+      set_contract_handler([](const ContractViolation& v) { burst_reports.push_back(v); });
+  // Element 3 of 5 is rejected (a handler that returns: it is skipped).
+  const std::size_t added = system.spawn_burst(5, [&](std::size_t k) {
+    return std::pair{Vector3<float>{float(k), 0, 0},
+                     Vector3<float>{k == 3 ? inf : 0.0f, 0, 0}} ;
+  });
+  (void)system.spawn(Vector3<float>{0, inf, 0}, Vector3<float>{});  // after the burst
+  // A burst whose generator throws at element 1 names no element once it has left.
+  try {
+    (void)system.spawn_burst(2, [&](std::size_t k) {
+      if (k == 1) throw std::runtime_error("generator");
+      return std::pair{Vector3<float>{}, Vector3<float>{}};
+    });
+  } catch (const std::runtime_error&) {
+  }
+  (void)system.spawn(Vector3<float>{inf, 0, 0}, Vector3<float>{});
+  set_contract_handler(previous);
+  CHECK(added == 4);
+  REQUIRE(burst_reports.size() == 3);
+  CHECK(std::string(burst_reports[0].argument) == "velocity");
+  REQUIRE(burst_reports[0].within != nullptr);
+  CHECK(std::string(burst_reports[0].within) == "spawn_burst");
+  CHECK(burst_reports[0].element == 3);
+  CHECK(describe(burst_reports[0]).find("(in spawn_burst, element 3)") != std::string::npos);
+  for (std::size_t r = 1; r < 3; ++r) {
+    CHECK(burst_reports[r].within == nullptr);
+    CHECK(burst_reports[r].element == 0);
+    CHECK(describe(burst_reports[r]).find("(in ") == std::string::npos);
+  }
 }
 
 TEST_CASE_TEMPLATE("the positions relative to a camera refuse a non-finite origin and write nothing",

@@ -99,6 +99,10 @@ struct ContractViolation {
   long double value[3];     ///< the offending value (a vector uses all three)
   int components;           ///< 1 for a number, 3 for a vector
   char text[128];           ///< the value as written in its own precision: "-2.5", "(0, inf, 0)"
+  /// When the value is one of many a call takes (spawn_burst: the particle its generator
+  /// returned for k), that call's name and the element's index; otherwise null and 0.
+  const char* within = nullptr;
+  std::size_t element = 0;
 };
 
 using ContractHandler = void (*)(const ContractViolation&);
@@ -113,6 +117,13 @@ inline std::string describe(const ContractViolation& violation) {
   message += violation.text;
   message += " must be ";
   message += violation.requirement;
+  if (violation.within != nullptr) {
+    message += " (in ";
+    message += violation.within;
+    message += ", element ";
+    message += std::to_string(violation.element);
+    message += ")";
+  }
   return message;
 }
 
@@ -145,6 +156,16 @@ inline ContractHandler contract_handler() noexcept {
   return shared_state::contract_handler.load();
 }
 
+namespace shared_state {
+/// The element a many-valued call is checking on this thread (ContractViolation::within and
+/// element), copied into every violation reported meanwhile.
+struct ReportElement {
+  const char* within = nullptr;
+  std::size_t element = 0;
+};
+inline thread_local ReportElement report_element{};
+}  // namespace shared_state
+
 }  // namespace pointmass
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
@@ -161,8 +182,27 @@ inline void append_text(char (&text)[128], std::size_t& used, const char* part) 
 
 [[gnu::cold]] inline void report(ContractViolation& violation, std::size_t used) {
   violation.text[used] = '\0';
+  violation.within = shared_state::report_element.within;
+  violation.element = shared_state::report_element.element;
   pointmass::contract_handler()(violation);
 }
+
+/// Names, for its lifetime, the element of `within` whose values the checks look at (put
+/// into every violation reported meanwhile on this thread); the previous one is back after
+/// it, whether the scope ends normally or by an exception.
+class ReportingElement {
+ public:
+  ReportingElement(const char* within, std::size_t element) noexcept
+      : previous_(shared_state::report_element) {
+    shared_state::report_element = {within, element};
+  }
+  ReportingElement(const ReportingElement&) = delete;
+  ReportingElement& operator=(const ReportingElement&) = delete;
+  ~ReportingElement() { shared_state::report_element = previous_; }
+
+ private:
+  shared_state::ReportElement previous_;
+};
 
 // Out of line and cold, so that a check costs the hot path one compare and one branch.
 template <class T>

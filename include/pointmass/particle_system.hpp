@@ -235,7 +235,8 @@ class ParticleSystem
   /// Spawns `count` particles, reserving once: particle k is spawn(generator(k)...), where
   /// generator(k) returns the arguments of a spawn as a tuple-like value (a std::pair of
   /// position and velocity, a std::tuple with the user columns' values after them) or a
-  /// particle_type. Returns how many were added (a rejected one is reported and skipped);
+  /// particle_type. Returns how many were added (a rejected one is reported, with
+  /// ContractViolation::within = "spawn_burst" and element = k, and skipped);
   /// they are the last ones, [size() - returned, size()), until the next removal. If the
   /// report of a rejected one throws (the default handler) or the generator throws, the
   /// particles this call added are removed again before the exception leaves: the system
@@ -248,6 +249,7 @@ class ParticleSystem
       std::size_t spawned = 0;
       for (std::size_t k = 0; k < count; ++k) {
         decltype(auto) made = generator(k);
+        const detail::ReportingElement reporting("spawn_burst", k);
         std::size_t i;
         if constexpr (std::is_convertible_v<decltype(made), const particle_type&>) {
           i = spawn(static_cast<const particle_type&>(made));
