@@ -26,6 +26,9 @@
 //     step_range_backward over any ranges (zeros are compared by value only once a system
 //     without ForceAccumulator was given a -0 acceleration component: the scalar path adds a
 //     zero force to the acceleration, which turns it into +0).
+//   * The render hand-off (positions_relative_to, any origin, any buffer length): the same
+//     bits as position_relative_to of the system and of the mirror's particle, exact wherever
+//     the true offset is a float, and nothing written past size() or when refused.
 //
 // Inputs starting with a byte >= 0xF0 drive the force generators instead (see "force
 // generators" below).
@@ -601,6 +604,64 @@ bool doomed(const Vector3<R>& p, const Vector3<R>& v, std::uint8_t mode) {
   return (hash >> 32) % 4 < mode % 4;  // mode 0: none, 3: about three in four
 }
 
+// Exact in long double: is p - origin's exact value a float? Then every road must return it.
+template <class R>
+bool exact_float_offset(R p, R origin, float& offset) {
+  const long double a = static_cast<long double>(p), b = -static_cast<long double>(origin);
+  const long double s = a + b;
+  const long double bb = s - a;
+  if ((a - (s - bb)) + (b - bb) != 0.0L) return false;  // s is not the exact difference
+  offset = static_cast<float>(s);
+  return static_cast<long double>(offset) == s;
+}
+
+// positions_relative_to with any origin (non-finite ones included; or one near a particle,
+// the usual camera) into a buffer of any length: refused with nothing written, or every offset the same bits as position_relative_to
+// of the system and of the mirror's particle, exact where the true offset is a float, and
+// nothing written past size().
+template <class System, class M>
+void check_positions_relative_to(const System& system, const M& mirror, Input& in) {
+  using R = typename System::real;
+  const std::uint8_t mode = in.byte();
+  Vector3<R> origin = in.vector<R>();
+  if (mode % 2 == 1 && system.size() != 0) {  // a camera near particle j: the offset read
+    const Vector3<R> p = system.position(std::size_t{mode} / 2 % system.size());
+    origin = {p.x - origin.x, p.y - origin.y, p.z - origin.z};
+  }
+  const std::size_t length = in.byte() % 64;
+  const Vector3<float> untouched{7.0f, -7.0f, 7.0f};
+  std::vector<Vector3<float>> buffer(length, untouched);
+  system.positions_relative_to(origin, std::span<Vector3<float>>(buffer));
+  const std::size_t n = system.size();
+  if (!finite(origin) || length < n) {
+    if (!finite(origin)) expect_rejected("positions_relative_to", "origin", origin);
+    else expect_rejected("positions_relative_to", "buffer", length);
+    for (const auto& b : buffer) require(identical(b, untouched), "a refused hand-off wrote");
+    return;
+  }
+  expect_accepted("positions_relative_to");
+  for (std::size_t i = 0; i < n; ++i) {
+    require(identical(buffer[i], system.position_relative_to(i, origin)),
+            "batch offset differs from the system's single one");
+    require(identical(buffer[i], mirror.bodies[i].position_relative_to(origin)),
+            "batch offset differs from the particle's");
+    const Vector3<R> p = system.position(i);
+    const R ps[3] = {p.x, p.y, p.z};
+    const R os[3] = {origin.x, origin.y, origin.z};
+    const float got[3] = {buffer[i].x, buffer[i].y, buffer[i].z};
+    for (int k = 0; k < 3; ++k) {
+      float exact = 0.0f;
+      if (exact_float_offset(ps[k], os[k], exact)) {
+        require(same(got[k], exact), "an offset that is a float came out inexact");
+      }
+    }
+  }
+  expect_accepted("position_relative_to");
+  for (std::size_t i = n; i < length; ++i) {
+    require(identical(buffer[i], untouched), "the hand-off wrote past size()");
+  }
+}
+
 template <class System>
 void fuzz_system(Input& in) {
   using R = typename System::real;
@@ -781,7 +842,12 @@ void fuzz_system(Input& in) {
         stepped = true;
         break;
       }
-      case 22: {  // copy-out into a buffer of any length with any stride, huge ones included
+      case 22: {
+        if ((code / 23) % 2 == 1) {  // the positions relative to any origin, into any buffer
+          check_positions_relative_to(system, mirror, in);
+          break;
+        }
+        // copy-out into a buffer of any length with any stride, huge ones included
         const std::size_t length = in.byte() % 64;
         const std::uint8_t kind = in.byte();
         const std::size_t stride = kind % 3 == 0   ? std::size_t{kind} % 8
