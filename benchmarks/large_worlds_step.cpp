@@ -201,6 +201,41 @@ void BM_Traffic(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(a.n));
 }
 
+// The floor the bytes set in the L1 cache: only the stores a step makes, every byte it changes
+// written once, with nothing loaded and nothing computed. No step of a storage takes less
+// time than storing its bytes.
+template <Storage S, class P>
+void store_columns(P* __restrict px, P* __restrict py, P* __restrict pz, float* __restrict ex,
+                   float* __restrict ey, float* __restrict ez, float* __restrict vx,
+                   float* __restrict vy, float* __restrict vz, std::size_t n, float c) {
+  for (std::size_t i = 0; i < n; ++i) {
+    vx[i] = c;
+    vy[i] = c;
+    vz[i] = c;
+    px[i] = static_cast<P>(c);
+    py[i] = static_cast<P>(c);
+    pz[i] = static_cast<P>(c);
+    if constexpr (S == Storage::compensated_positions) {
+      ex[i] = c;
+      ey[i] = c;
+      ez[i] = c;
+    }
+  }
+}
+
+template <Storage S>
+void BM_Stores(benchmark::State& state) {
+  HandArrays<S> a(static_cast<std::size_t>(state.range(0)));
+  float c = duration<float>();
+  for (auto _ : state) {
+    store_columns<S>(a.p[0], a.p[1], a.p[2], a.e[0], a.e[1], a.e[2], a.v[0], a.v[1], a.v[2], a.n,
+                     c);
+    c = -c;
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(a.n));
+}
+
 using FloatSparks = ParticleSystem<float>;
 using DoubleSparks = ParticleSystem<Precision<float, double>>;
 using CompensatedSparks = ParticleSystem<Precision<float, Compensated<float>>>;
@@ -225,6 +260,15 @@ POINTMASS_LARGE_WORLDS_BENCHMARK(BM_HandSparks, Storage::compensated_positions);
 POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Traffic, Storage::float_positions);
 POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Traffic, Storage::double_positions);
 POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Traffic, Storage::compensated_positions);
+// In the L1 data cache (500 particles: 12 KB of float, 18 KB wide): the sparks' step and the
+// stores alone, for the floor that the bytes set there.
+#define POINTMASS_IN_L1_BENCHMARK(...) BENCHMARK_TEMPLATE(__VA_ARGS__)->Arg(500)
+POINTMASS_IN_L1_BENCHMARK(BM_Step, FloatSparks);
+POINTMASS_IN_L1_BENCHMARK(BM_Step, DoubleSparks);
+POINTMASS_IN_L1_BENCHMARK(BM_Step, CompensatedSparks);
+POINTMASS_IN_L1_BENCHMARK(BM_Stores, Storage::float_positions);
+POINTMASS_IN_L1_BENCHMARK(BM_Stores, Storage::double_positions);
+POINTMASS_IN_L1_BENCHMARK(BM_Stores, Storage::compensated_positions);
 
 }  // namespace
 

@@ -60,14 +60,26 @@ for kind, title in (("Sparks", "sparks: per-second damping, p + v t, gravity"),
                 cells = [f"{rate[f'{name}/{n}']:,.0f}" for n in sizes]
                 costs = [f"{rate[f'{base}/{n}'] / rate[f'{name}/{n}']:.2f}" for n in sizes]
                 print(f"| {prefix}: {label} | {size} | " + " | ".join(cells) + " | " + " | ".join(costs) + f" | {note} |")
-        # The floor in cache: a step stores every byte it changes, 24 a particle in all-float
-        # and 36 in either wide storage: 6 and 9 stores of 32 bytes for 8 particles.
-        mhz = float(ctx.get('mhz_per_cpu'))
-        cycles = {v: 8 * mhz / rate[f"BM_Step<{v}Sparks>/1000"] for v in ("Float", "Double", "Compensated")}
-        print(f"\nIn cycles at {mhz:,.0f} MHz, from the rates above: the all-float step of 1,000 "
-              f"sparks takes {cycles['Float']:.1f} cycles per 8 particles, which store 6 vectors "
-              f"of 32 bytes; double positions take {cycles['Double']:.1f} and compensated "
-              f"{cycles['Compensated']:.1f}, for 9 stores each.")
+        # In the L1 data cache (500 particles): the step, and the stores alone (the floor the
+        # bytes set: no step of a storage takes less time than storing its bytes).
+        l1 = [c["size"] for c in ctx.get("caches", []) if c.get("level") == 1 and c.get("type") == "Data"]
+        l1_text = f"{l1[0] // 1024} KiB" if l1 else "the"
+        print(f"\nIn the L1 data cache ({l1_text} a core here): 500 particles, 12 KB of float "
+              "storage and 18 KB of either wide one. \"Stores alone\" writes every byte the step "
+              "changes once, with nothing loaded and nothing computed; its last row is the cost "
+              "against the all-float step of a step that took only its stores' time.\n")
+        print("| at 500 particles | float | `Precision<float, double>` | `Precision<float, Compensated<float>>` |")
+        print("|---|---|---|---|")
+        step = {v: rate[f"BM_Step<{v}Sparks>/500"] for v in ("Float", "Double", "Compensated")}
+        stores = {v: rate[f"BM_Stores<Storage::{s}_positions>/500"]
+                  for v, s in (("Float", "float"), ("Double", "double"), ("Compensated", "compensated"))}
+        order = ("Float", "Double", "Compensated")
+        print("| step, M particle-steps/s (cost against all-float) | "
+              + " | ".join(f"{step[v]:,.0f} ({step['Float'] / step[v]:.2f})" for v in order) + " |")
+        print("| stores alone, M particles/s (against all-float's stores) | "
+              + " | ".join(f"{stores[v]:,.0f} ({stores['Float'] / stores[v]:.2f})" for v in order) + " |")
+        print("| a step of its stores' time alone, cost against the all-float step | "
+              + " | ".join(f"{step['Float'] / stores[v]:.2f}" for v in order) + " |")
     print()
 PY
 publish_table "$doc" cost "$cost"
