@@ -164,76 +164,60 @@ void BM_HandSparks(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(a.n));
 }
 
-// The least a step can do with the storage: load every byte the sparks' step loads, add a
-// constant, and store it back (one addition per element, no conversion, no Fast2Sum). Its time
-// against all-float's is what the bytes alone cost on this machine: a step that does little
-// besides its loads and stores costs about that ratio too.
-template <Storage S, class P>
+// The least a step can do with the storage, in two forms over the same columns (every
+// element the sparks' step changes: velocities, positions, and the pair's error terms):
+//   Touch::add    loads each element, adds a constant and stores it back (BM_Traffic): what
+//                 the bytes alone cost. A step that does little besides its loads and stores
+//                 costs about that ratio too.
+//   Touch::store  stores the constant, with nothing loaded (BM_Stores): the floor the bytes
+//                 set in the L1 cache, since no step of a storage takes less time than storing
+//                 its bytes.
+enum class Touch { add, store };
+
+template <Storage S, Touch T, class P>
 void touch_columns(P* __restrict px, P* __restrict py, P* __restrict pz, float* __restrict ex,
                    float* __restrict ey, float* __restrict ez, float* __restrict vx,
                    float* __restrict vy, float* __restrict vz, std::size_t n, float c) {
+  const auto touch = [c](auto& x) {
+    using X = std::remove_reference_t<decltype(x)>;
+    if constexpr (T == Touch::add) x += static_cast<X>(c);
+    else x = static_cast<X>(c);
+  };
   for (std::size_t i = 0; i < n; ++i) {
-    vx[i] += c;
-    vy[i] += c;
-    vz[i] += c;
-    px[i] += static_cast<P>(c);
-    py[i] += static_cast<P>(c);
-    pz[i] += static_cast<P>(c);
+    touch(vx[i]);
+    touch(vy[i]);
+    touch(vz[i]);
+    touch(px[i]);
+    touch(py[i]);
+    touch(pz[i]);
     if constexpr (S == Storage::compensated_positions) {
-      ex[i] += c;
-      ey[i] += c;
-      ez[i] += c;
+      touch(ex[i]);
+      touch(ey[i]);
+      touch(ez[i]);
     }
   }
 }
 
-template <Storage S>
-void BM_Traffic(benchmark::State& state) {
+template <Storage S, Touch T>
+void touch_loop(benchmark::State& state) {
   HandArrays<S> a(static_cast<std::size_t>(state.range(0)));
   // Alternating signs keep the values where they started.
   float c = duration<float>();
   for (auto _ : state) {
-    touch_columns<S>(a.p[0], a.p[1], a.p[2], a.e[0], a.e[1], a.e[2], a.v[0], a.v[1], a.v[2], a.n,
-                     c);
+    touch_columns<S, T>(a.p[0], a.p[1], a.p[2], a.e[0], a.e[1], a.e[2], a.v[0], a.v[1], a.v[2],
+                        a.n, c);
     c = -c;
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(a.n));
 }
-
-// The floor the bytes set in the L1 cache: only the stores a step makes, every byte it changes
-// written once, with nothing loaded and nothing computed. No step of a storage takes less
-// time than storing its bytes.
-template <Storage S, class P>
-void store_columns(P* __restrict px, P* __restrict py, P* __restrict pz, float* __restrict ex,
-                   float* __restrict ey, float* __restrict ez, float* __restrict vx,
-                   float* __restrict vy, float* __restrict vz, std::size_t n, float c) {
-  for (std::size_t i = 0; i < n; ++i) {
-    vx[i] = c;
-    vy[i] = c;
-    vz[i] = c;
-    px[i] = static_cast<P>(c);
-    py[i] = static_cast<P>(c);
-    pz[i] = static_cast<P>(c);
-    if constexpr (S == Storage::compensated_positions) {
-      ex[i] = c;
-      ey[i] = c;
-      ez[i] = c;
-    }
-  }
+template <Storage S>
+void BM_Traffic(benchmark::State& state) {
+  touch_loop<S, Touch::add>(state);
 }
-
 template <Storage S>
 void BM_Stores(benchmark::State& state) {
-  HandArrays<S> a(static_cast<std::size_t>(state.range(0)));
-  float c = duration<float>();
-  for (auto _ : state) {
-    store_columns<S>(a.p[0], a.p[1], a.p[2], a.e[0], a.e[1], a.e[2], a.v[0], a.v[1], a.v[2], a.n,
-                     c);
-    c = -c;
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(a.n));
+  touch_loop<S, Touch::store>(state);
 }
 
 using FloatSparks = ParticleSystem<float>;
@@ -248,27 +232,27 @@ using CompensatedShots =
 #define POINTMASS_LARGE_WORLDS_BENCHMARK(...) \
   BENCHMARK_TEMPLATE(__VA_ARGS__)->Arg(1000)->Arg(100000)->Arg(10000000)
 
-POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Step, FloatSparks);
-POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Step, DoubleSparks);
-POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Step, CompensatedSparks);
+// REGISTER(benchmark, each of the sparks' systems) and REGISTER(benchmark, each storage).
+#define POINTMASS_EACH_SPARKS(REGISTER, benchmark) \
+  REGISTER(benchmark, FloatSparks);                \
+  REGISTER(benchmark, DoubleSparks);               \
+  REGISTER(benchmark, CompensatedSparks)
+#define POINTMASS_EACH_STORAGE(REGISTER, benchmark)       \
+  REGISTER(benchmark, Storage::float_positions);          \
+  REGISTER(benchmark, Storage::double_positions);         \
+  REGISTER(benchmark, Storage::compensated_positions)
+
+POINTMASS_EACH_SPARKS(POINTMASS_LARGE_WORLDS_BENCHMARK, BM_Step);
 POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Step, FloatShots);
 POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Step, DoubleShots);
 POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Step, CompensatedShots);
-POINTMASS_LARGE_WORLDS_BENCHMARK(BM_HandSparks, Storage::float_positions);
-POINTMASS_LARGE_WORLDS_BENCHMARK(BM_HandSparks, Storage::double_positions);
-POINTMASS_LARGE_WORLDS_BENCHMARK(BM_HandSparks, Storage::compensated_positions);
-POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Traffic, Storage::float_positions);
-POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Traffic, Storage::double_positions);
-POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Traffic, Storage::compensated_positions);
+POINTMASS_EACH_STORAGE(POINTMASS_LARGE_WORLDS_BENCHMARK, BM_HandSparks);
+POINTMASS_EACH_STORAGE(POINTMASS_LARGE_WORLDS_BENCHMARK, BM_Traffic);
 // In the L1 data cache (500 particles: 12 KB of float, 18 KB wide): the sparks' step and the
 // stores alone, for the floor that the bytes set there.
 #define POINTMASS_IN_L1_BENCHMARK(...) BENCHMARK_TEMPLATE(__VA_ARGS__)->Arg(500)
-POINTMASS_IN_L1_BENCHMARK(BM_Step, FloatSparks);
-POINTMASS_IN_L1_BENCHMARK(BM_Step, DoubleSparks);
-POINTMASS_IN_L1_BENCHMARK(BM_Step, CompensatedSparks);
-POINTMASS_IN_L1_BENCHMARK(BM_Stores, Storage::float_positions);
-POINTMASS_IN_L1_BENCHMARK(BM_Stores, Storage::double_positions);
-POINTMASS_IN_L1_BENCHMARK(BM_Stores, Storage::compensated_positions);
+POINTMASS_EACH_SPARKS(POINTMASS_IN_L1_BENCHMARK, BM_Step);
+POINTMASS_EACH_STORAGE(POINTMASS_IN_L1_BENCHMARK, BM_Stores);
 
 }  // namespace
 
