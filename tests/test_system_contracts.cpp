@@ -433,41 +433,57 @@ TEST_CASE("spawn_burst takes its particles back when a rejected one's report thr
 
 namespace {
 std::vector<ContractViolation> burst_reports;
+bool throw_after_report = false;
 }  // namespace
 
 TEST_CASE("spawn_burst names the element whose particle it rejects, and only inside the burst") {
   ParticleSystem<float> system;
   const float inf = std::numeric_limits<float>::infinity();
   burst_reports.clear();
-  const ContractHandler previous =
-      set_contract_handler([](const ContractViolation& v) { burst_reports.push_back(v); });
+  throw_after_report = false;
+  const ContractHandler previous = set_contract_handler([](const ContractViolation& v) {
+    burst_reports.push_back(v);
+    if (throw_after_report) throw std::invalid_argument("handler");
+  });
   // Element 3 of 5 is rejected (a handler that returns: it is skipped).
   const std::size_t added = system.spawn_burst(5, [&](std::size_t k) {
     return std::pair{Vector3<float>{float(k), 0, 0},
-                     Vector3<float>{k == 3 ? inf : 0.0f, 0, 0}} ;
+                     Vector3<float>{k == 3 ? inf : 0.0f, 0, 0}};
   });
   (void)system.spawn(Vector3<float>{0, inf, 0}, Vector3<float>{});  // after the burst
-  // A burst whose generator throws at element 1 names no element once it has left.
+  // Element 1 of 2 is rejected by a handler that throws: the exception leaves the burst
+  // while element 1's checks run, and the report after it names no element.
+  throw_after_report = true;
+  bool thrown = false;
   try {
     (void)system.spawn_burst(2, [&](std::size_t k) {
-      if (k == 1) throw std::runtime_error("generator");
-      return std::pair{Vector3<float>{}, Vector3<float>{}};
+      return std::pair{Vector3<float>{}, Vector3<float>{k == 1 ? inf : 0.0f, 0, 0}};
     });
-  } catch (const std::runtime_error&) {
+  } catch (const std::invalid_argument&) {
+    thrown = true;
   }
+  throw_after_report = false;
   (void)system.spawn(Vector3<float>{inf, 0, 0}, Vector3<float>{});
   set_contract_handler(previous);
   CHECK(added == 4);
-  REQUIRE(burst_reports.size() == 3);
-  CHECK(std::string(burst_reports[0].argument) == "velocity");
-  REQUIRE(burst_reports[0].within != nullptr);
-  CHECK(std::string(burst_reports[0].within) == "spawn_burst");
-  CHECK(burst_reports[0].element == 3);
-  CHECK(describe(burst_reports[0]).find("(in spawn_burst, element 3)") != std::string::npos);
-  for (std::size_t r = 1; r < 3; ++r) {
-    CHECK(burst_reports[r].within == nullptr);
-    CHECK(burst_reports[r].element == 0);
-    CHECK(describe(burst_reports[r]).find("(in ") == std::string::npos);
+  CHECK(thrown);
+  REQUIRE(burst_reports.size() == 4);
+  const std::size_t elements[] = {3, 0, 1, 0};
+  const bool in_burst[] = {true, false, true, false};
+  for (std::size_t r = 0; r < 4; ++r) {
+    CAPTURE(r);
+    CHECK(std::string(burst_reports[r].argument) == (r % 2 == 1 ? "position" : "velocity"));
+    CHECK(burst_reports[r].element == elements[r]);
+    const std::string message = describe(burst_reports[r]);
+    if (in_burst[r]) {
+      REQUIRE(burst_reports[r].within != nullptr);
+      CHECK(std::string(burst_reports[r].within) == "spawn_burst");
+      CHECK(message.find("(in spawn_burst, element " + std::to_string(elements[r]) + ")") !=
+            std::string::npos);
+    } else {
+      CHECK(burst_reports[r].within == nullptr);
+      CHECK(message.find("(in ") == std::string::npos);
+    }
   }
 }
 
