@@ -5,7 +5,9 @@
 // compensated float pair (9 arrays, 36 bytes), at 1,000, 100,000 and 10,000,000 particles;
 // and the same for the artillery configuration (damping::Exact, position::Exact). Beside them,
 // the bound: the sparks' arithmetic written by hand over plain arrays with each of the three
-// storages (float positions; double positions; float positions with float error terms), and
+// storages (float positions; double positions; float positions with float error terms),
+// walking forwards, and walking as the system of that storage does (BM_HandSparksLikeSystem:
+// forwards and backwards in turn, within the system's size bounds), and
 // the least any loop over each storage does (BM_Traffic: every byte loaded, one addition,
 // stored back), so that what wider positions cost the hardware itself is measured in the
 // same run.
@@ -142,18 +144,46 @@ struct HandArrays {
   float* e[3] = {nullptr, nullptr, nullptr};
 };
 
+// The system of each storage, whose walk a hand-written loop may follow.
 template <Storage S>
-void BM_HandSparks(benchmark::State& state) {
+using SparksOf = std::conditional_t<
+    S == Storage::float_positions, ParticleSystem<float>,
+    std::conditional_t<S == Storage::double_positions, ParticleSystem<Precision<float, double>>,
+                       ParticleSystem<Precision<float, Compensated<float>>>>>;
+
+// How a hand-written loop walks its arrays from one step to the next: always forwards, or as
+// the storage's system does (forwards and backwards in turn within its size bounds, each
+// backward walk in whole chunks from the end, each chunk forwards: docs/performance.md).
+enum class Walk { forwards, like_the_system };
+
+template <Storage S, Walk W>
+void hand_sparks_loop(benchmark::State& state) {
   HandArrays<S> a(static_cast<std::size_t>(state.range(0)));
   const float t = duration<float>();
   const float kept = real_pow(0.9f, t);
   const Vector3<float> g = gravity<float>();
   const std::vector<float> start_x(a.v[0], a.v[0] + a.n), start_y(a.v[1], a.v[1] + a.n),
       start_z(a.v[2], a.v[2] + a.n);  // the velocities, to put back
+  const bool alternating = W == Walk::like_the_system && SparksOf<S>::alternates(a.n);
+  // The particles [begin, begin + count).
+  const auto step = [&](std::size_t begin, std::size_t count) {
+    const auto at = [begin](auto* column) { return column ? column + begin : column; };
+    hand_sparks<S>(at(a.p[0]), at(a.p[1]), at(a.p[2]), at(a.e[0]), at(a.e[1]), at(a.e[2]),
+                   at(a.v[0]), at(a.v[1]), at(a.v[2]), count, g.x, g.y, g.z, t, kept);
+  };
   std::int64_t steps = 0;
   for (auto _ : state) {
-    hand_sparks<S>(a.p[0], a.p[1], a.p[2], a.e[0], a.e[1], a.e[2], a.v[0], a.v[1], a.v[2], a.n,
-                   g.x, g.y, g.z, t, kept);
+    if (alternating && steps % 2 == 1) {
+      constexpr std::size_t chunk = SparksOf<S>::backward_chunk;
+      std::size_t end = a.n - a.n % chunk;
+      step(end, a.n - end);
+      while (end != 0) {
+        end -= chunk;
+        step(end, chunk);
+      }
+    } else {
+      step(0, a.n);
+    }
     benchmark::ClobberMemory();
     refresh_now_and_then(state, steps, [&] {
       std::copy(start_x.begin(), start_x.end(), a.v[0]);
@@ -162,6 +192,14 @@ void BM_HandSparks(benchmark::State& state) {
     });
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(a.n));
+}
+template <Storage S>
+void BM_HandSparks(benchmark::State& state) {
+  hand_sparks_loop<S, Walk::forwards>(state);
+}
+template <Storage S>
+void BM_HandSparksLikeSystem(benchmark::State& state) {
+  hand_sparks_loop<S, Walk::like_the_system>(state);
 }
 
 // The least a step can do with the storage, in two forms over the same columns (every
@@ -247,6 +285,7 @@ POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Step, FloatShots);
 POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Step, DoubleShots);
 POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Step, CompensatedShots);
 POINTMASS_EACH_STORAGE(POINTMASS_LARGE_WORLDS_BENCHMARK, BM_HandSparks);
+POINTMASS_EACH_STORAGE(POINTMASS_LARGE_WORLDS_BENCHMARK, BM_HandSparksLikeSystem);
 POINTMASS_EACH_STORAGE(POINTMASS_LARGE_WORLDS_BENCHMARK, BM_Traffic);
 // In the L1 data cache (500 particles: 12 KB of float, 18 KB wide): the sparks' step and the
 // stores alone, for the floor that the bytes set there.

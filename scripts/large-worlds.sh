@@ -30,7 +30,9 @@ print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; med
       "`ParticleSystem::step`, M particle-steps/s, and the cost against all-float in the same "
       "run (time per step / all-float's). The rows \"by hand\" are the sparks' arithmetic "
       "written as a plain loop over arrays of each storage, in the same run: what the "
-      "storage itself costs on this machine, the bound for the rows above them. The rows "
+      "storage itself costs on this machine, the bound for the rows above them; walking "
+      "forwards, or forwards and backwards in turn where the system of that storage does "
+      "(\"the system's walk\"). The rows "
       "\"bytes only\" load every byte of each storage, add a constant and store it back: "
       "what the bytes alone cost, with no arithmetic to speak of.\n")
 sizes = ("1000", "100000", "10000000")
@@ -52,6 +54,8 @@ for kind, title in (("Sparks", "sparks: per-second damping, p + v t, gravity"),
         # The bound: the same arithmetic written by hand over plain arrays of each storage;
         # and what the bytes alone cost: every byte loaded, one addition, stored back.
         for benchmark, prefix, pair, note in (("BM_HandSparks", "by hand", "float pair (Fast2Sum)", "the bound"),
+                                              ("BM_HandSparksLikeSystem", "by hand, the system's walk",
+                                               "float pair (Fast2Sum)", "the bound, same walk"),
                                               ("BM_Traffic", "bytes only", "float pair", "the bytes alone")):
             for variant, label, size in (("float", "float positions", 24), ("double", "double positions", 36),
                                          ("compensated", pair, 36)):
