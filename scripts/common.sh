@@ -53,12 +53,13 @@ POINTMASS_BENCHMARKS_ONLY=(-DPOINTMASS_BUILD_TESTS=OFF -DPOINTMASS_BUILD_EXAMPLE
                            -DPOINTMASS_BUILD_BENCHMARKS=ON)
 
 # build_release BUILD_DIR "TARGET..." [cmake arguments...]: configures BUILD_DIR (Ninja,
-# Release, -march=native) and builds the named targets, quietly.
+# Release, -march=native, or the compiler flags in RELEASE_CXX_FLAGS) and builds the named
+# targets, quietly.
 build_release() {
   local dir=$1 targets=$2
   shift 2
   cmake -S "$POINTMASS_ROOT" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" \
-    -DCMAKE_CXX_FLAGS="-march=native" >/dev/null
+    -DCMAKE_CXX_FLAGS="${RELEASE_CXX_FLAGS:--march=native}" >/dev/null
   # shellcheck disable=SC2086  # the targets are words
   cmake --build "$dir" --target $targets >/dev/null
 }
@@ -74,11 +75,12 @@ run_repetitions() {
     --benchmark_report_aggregates_only=true --benchmark_format=json >"$json"
 }
 
-# median_table JSON REPETITIONS <<'PY' ... PY: runs the Python script on standard input with
-# sys.argv[1:] = JSON REPETITIONS and, defined before it, `data` (the JSON report), `ctx` (its
-# context) and `rate` (run name -> median items_per_second, in millions).
+# median_table JSON REPETITIONS [MORE...] <<'PY' ... PY: runs the Python script on standard
+# input with sys.argv[1:] = JSON REPETITIONS [MORE...] and, defined before it, `data` (the
+# JSON report), `ctx` (its context) and `rate` (run name -> median items_per_second, in
+# millions).
 median_table() {
-  python3 - "$1" "$2" <<<"import json, sys
+  python3 - "$@" <<<"import json, sys
 data = json.load(open(sys.argv[1]))
 rate = {b['run_name']: b['items_per_second'] / 1e6
         for b in data['benchmarks'] if b.get('aggregate_name') == 'median'}

@@ -87,3 +87,41 @@ for kind, title in (("Sparks", "sparks: per-second damping, p + v t, gravity"),
     print()
 PY
 publish_table "$doc" cost "$cost"
+
+# The same sparks' steps built for 512-bit vectors, on a processor that has them (AVX-512):
+# what the instruction count of the wide steps costs at the width the compiler picks by
+# default (256 bits here) against the width that converts 8 floats to doubles at once.
+wide="$build/wide-vectors.md"
+if grep -qw avx512f /proc/cpuinfo; then
+  build512=${LARGE_WORLDS_BUILD_512:-"$POINTMASS_ROOT/build/large-worlds-512"}
+  RELEASE_CXX_FLAGS="-march=native -mprefer-vector-width=512" build_release "$build512" \
+    large_worlds_step -DPOINTMASS_BUILD_TESTS=OFF -DPOINTMASS_BUILD_EXAMPLES=OFF \
+    -DPOINTMASS_BUILD_BENCHMARKS=ON
+  json512=$(mktemp)
+  trap 'rm -f "$json" "$json512"' EXIT
+  run_repetitions "$json512" "$build512/benchmarks/large_worlds_step" "$repetitions" 0.05 \
+    --benchmark_filter='^BM_Step<.*Sparks>/(500|1000|100000)$'
+  median_table "$json512" "$repetitions" "$json" >"$wide" <<'PY'
+default = {}
+for b in json.load(open(sys.argv[3]))["benchmarks"]:
+    if b.get("aggregate_name") == "median":
+        default[b["run_name"]] = b["items_per_second"] / 1e6
+print(f"The sparks' `ParticleSystem::step` built with `-march=native -mprefer-vector-width=512`, "
+      f"medians of {sys.argv[2]} interleaved repetitions (`scripts/large-worlds.sh "
+      f"{sys.argv[2]}`), M particle-steps/s and the cost against all-float of the same build; "
+      "in brackets, the speed against the default build of the table above (`-march=native`).\n")
+print("| positions | 500 | 1,000 | 100,000 | cost at 500 | 1,000 | 100,000 |")
+print("|---|---|---|---|---|---|---|")
+sizes = ("500", "1000", "100000")
+for variant, label in (("Float", "float"), ("Double", "`Precision<float, double>`"),
+                       ("Compensated", "`Precision<float, Compensated<float>>`")):
+    name = f"BM_Step<{variant}Sparks>"
+    cells = [f"{rate[f'{name}/{n}']:,.0f} ({rate[f'{name}/{n}'] / default[f'{name}/{n}']:.2f}x)"
+             for n in sizes]
+    costs = [f"{rate[f'BM_Step<FloatSparks>/{n}'] / rate[f'{name}/{n}']:.2f}" for n in sizes]
+    print(f"| {label} | " + " | ".join(cells) + " | " + " | ".join(costs) + " |")
+PY
+else
+  echo "Not measured: this machine's processor has no 512-bit vectors (AVX-512)." >"$wide"
+fi
+publish_table "$doc" wide-vectors "$wide"
