@@ -78,14 +78,29 @@ run_repetitions() {
 # median_table JSON REPETITIONS [MORE...] <<'PY' ... PY: runs the Python script on standard
 # input with sys.argv[1:] = JSON REPETITIONS [MORE...] and, defined before it, `data` (the
 # JSON report), `ctx` (its context) and `rate` (run name -> median items_per_second, in
-# millions).
+# millions). Then, if the repetitions of any benchmark varied by more than
+# POINTMASS_NOISY_CV (0.10: their coefficient of variation), it says so under the tables and
+# on standard error: another load on the machine for part of the run (a busy sibling
+# hardware thread halved every loop's speed here for seconds at a time), so that loops timed
+# in different parts of it may compare wrongly, and the command is worth running again.
 median_table() {
-  python3 - "$@" <<<"import json, sys
+  python3 - "$@" <<<"import json, os, sys
 data = json.load(open(sys.argv[1]))
 rate = {b['run_name']: b['items_per_second'] / 1e6
         for b in data['benchmarks'] if b.get('aggregate_name') == 'median'}
 ctx = data['context']
-$(cat)"
+$(cat)
+cv = {b['run_name']: b['items_per_second']
+      for b in data['benchmarks'] if b.get('aggregate_name') == 'cv' and 'items_per_second' in b}
+limit = float(os.environ.get('POINTMASS_NOISY_CV', '0.10'))
+noisy = sorted(((v, k) for k, v in cv.items() if v > limit), reverse=True)
+if noisy:
+    note = (f'Not a quiet run: the repetitions of {len(noisy)} of the {len(cv)} benchmarks '
+            f'varied by more than {limit:.0%} (the most, {noisy[0][0]:.0%}, {noisy[0][1]}), so '
+            'loops timed in different parts of the run may compare wrongly; run the command '
+            'again on a quiet machine.')
+    print(); print(note)
+    print(note, file=sys.stderr)"
 }
 
 # publish_table DOC NAME FILE: prints FILE and writes it into DOC between the NAME markers.
