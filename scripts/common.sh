@@ -80,9 +80,10 @@ run_repetitions() {
 # JSON report), `ctx` (its context) and `rate` (run name -> median items_per_second, in
 # millions). Then, if the repetitions of any benchmark varied by more than
 # POINTMASS_NOISY_CV (0.10: their coefficient of variation), it says so under the tables and
-# on standard error: another load on the machine for part of the run (a busy sibling
-# hardware thread halved every loop's speed here for seconds at a time), so that loops timed
-# in different parts of it may compare wrongly, and the command is worth running again.
+# on standard error: another load on the machine for part of the run (here every loop ran at
+# about half its speed for seconds at a time, with nothing of the project's running), so that
+# loops timed in different parts of it may compare wrongly, and the command is worth running
+# again.
 median_table() {
   python3 - "$@" <<<"import json, os, sys
 data = json.load(open(sys.argv[1]))
