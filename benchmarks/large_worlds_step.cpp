@@ -70,6 +70,11 @@ void BM_Step(benchmark::State& state) {
   state.counters["bytes_per_particle"] = static_cast<double>(System::storage_bytes_per_particle);
 }
 
+// The systems of the sparks (per-second damping, p + v t) for each position storage.
+using FloatSparks = ParticleSystem<float>;
+using DoubleSparks = ParticleSystem<Precision<float, double>>;
+using CompensatedSparks = ParticleSystem<Precision<float, Compensated<float>>>;
+
 // How the hand-written loop stores a position component.
 enum class Storage { float_positions, double_positions, compensated_positions };
 
@@ -147,9 +152,8 @@ struct HandArrays {
 // The system of each storage, whose walk a hand-written loop may follow.
 template <Storage S>
 using SparksOf = std::conditional_t<
-    S == Storage::float_positions, ParticleSystem<float>,
-    std::conditional_t<S == Storage::double_positions, ParticleSystem<Precision<float, double>>,
-                       ParticleSystem<Precision<float, Compensated<float>>>>>;
+    S == Storage::float_positions, FloatSparks,
+    std::conditional_t<S == Storage::double_positions, DoubleSparks, CompensatedSparks>>;
 
 // How a hand-written loop walks its arrays from one step to the next: always forwards, or as
 // the storage's system does (forwards and backwards in turn within its size bounds, each
@@ -258,9 +262,6 @@ void BM_Stores(benchmark::State& state) {
   touch_loop<S, Touch::store>(state);
 }
 
-using FloatSparks = ParticleSystem<float>;
-using DoubleSparks = ParticleSystem<Precision<float, double>>;
-using CompensatedSparks = ParticleSystem<Precision<float, Compensated<float>>>;
 using FloatShots = ParticleSystem<float, damping::Exact, position::Exact>;
 using DoubleShots = ParticleSystem<Precision<float, double>, damping::Exact, position::Exact>;
 using CompensatedShots =
