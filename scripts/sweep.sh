@@ -268,6 +268,51 @@ for real in precisions:
         out.append(f"| {variant} | " + " | ".join(cells) + " |")
 out.append("")
 
+# The ratios the advice above ("Which variant for what") quotes, from this run's times.
+def t(kind, scene, variant):
+    return ns[f"{kind}/{scene}/{variant}"]
+def pairs(real):
+    return [v for v in dict.fromkeys(r["variant"] for r in rows["ballistic"])
+            if v.split(" ")[0] == real]
+def span(values):
+    lo, hi = min(values), max(values)
+    return f"{lo:.2f}" if f"{lo:.2f}" == f"{hi:.2f}" else f"{lo:.2f} to {hi:.2f}"
+out.append("#### The ratios the advice quotes\n")
+out.append("Each cell divides times of the table above, from this run. The `Particle` rows "
+           "take both scenes (the ballistic shots and the spring), the SemiImplicit row every "
+           "damping policy too, and the system's row every policy pair: a range is the least "
+           "and the greatest of those ratios.\n")
+out.append("| ratio of times | float | double |")
+out.append("|---|---|---|")
+def row(label, f):
+    out.append(f"| {label} | " + " | ".join(f(real) for real in ("float", "double")) + " |")
+row("`Particle`, `None + Kinematic` / `None + Euler`",
+    lambda r: span([t("Particle", s, f"{r} None + Kinematic") / t("Particle", s, f"{r} None + Euler")
+                    for s in ("ballistic", "spring")]))
+row("`Particle`, `Exact + Exact` / `PerSecond + Kinematic`",
+    lambda r: span([t("Particle", s, f"{r} Exact + Exact") / t("Particle", s, f"{r} PerSecond + Kinematic")
+                    for s in ("ballistic", "spring")]))
+row("`Particle`, `Exact + Exact` / `PerSecond + Euler`",
+    lambda r: span([t("Particle", s, f"{r} Exact + Exact") / t("Particle", s, f"{r} PerSecond + Euler")
+                    for s in ("ballistic", "spring")]))
+row("`Particle`, `D + SemiImplicit` / `D + Euler`, every damping D",
+    lambda r: span([t("Particle", s, v.replace("Euler", "SemiImplicit")) / t("Particle", s, v)
+                    for s in ("ballistic", "spring") for v in pairs(r) if v.endswith("+ Euler")]))
+row("`ParticleSystem`, every pair / the hand-written loop",
+    lambda r: span([t("ParticleSystem", "sparks", v) / ns[f"hand-written/sparks/{r}"]
+                    for v in pairs(r)]))
+row("`ParticleSystem`, `Exact + Exact` / `PerSecond + Euler`",
+    lambda r: span([t("ParticleSystem", "sparks", f"{r} Exact + Exact") /
+                    t("ParticleSystem", "sparks", f"{r} PerSecond + Euler")]))
+out.append("")
+out.append("| `float/double-pos PerSecond + Euler` / `double PerSecond + Euler` | ratio of times |")
+out.append("|---|---|")
+for label, kind, scene in (("`ParticleSystem`, sparks", "ParticleSystem", "sparks"),
+                           ("`Particle`, ballistic", "Particle", "ballistic"),
+                           ("`Particle`, spring", "Particle", "spring")):
+    out.append(f"| {label} | {t(kind, scene, 'float/double-pos PerSecond + Euler') / t(kind, scene, 'double PerSecond + Euler'):.2f} |")
+out.append("")
+
 text = open(doc).read()
 begin, end = "<!-- sweep:begin -->", "<!-- sweep:end -->"
 head, rest = text.split(begin, 1)
