@@ -78,21 +78,31 @@ run_repetitions() {
 # median_table JSON REPETITIONS [MORE...] <<'PY' ... PY: runs the Python script on standard
 # input with sys.argv[1:] = JSON REPETITIONS [MORE...] and, defined before it, `data` (the
 # JSON report), `ctx` (its context) and `rate` (run name -> median items_per_second, in
-# millions). Then, if the repetitions of any benchmark varied by more than
-# POINTMASS_NOISY_CV (0.10: their coefficient of variation), it says so under the tables and
-# on standard error: another load on the machine for part of the run (here every loop ran at
-# about half its speed for seconds at a time, with nothing of the project's running), so that
-# loops timed in different parts of it may compare wrongly, and the command is worth running
-# again.
+# millions). Then noisy_note's sentence, if any, under the tables.
 median_table() {
   python3 - "$@" <<<"import json, os, sys
 data = json.load(open(sys.argv[1]))
 rate = {b['run_name']: b['items_per_second'] / 1e6
         for b in data['benchmarks'] if b.get('aggregate_name') == 'median'}
 ctx = data['context']
-$(cat)
-cv = {b['run_name']: b['items_per_second']
-      for b in data['benchmarks'] if b.get('aggregate_name') == 'cv' and 'items_per_second' in b}
+$(cat)"
+  local note
+  note=$(noisy_note "$1" items_per_second)
+  if [[ -n $note ]]; then printf '\n%s\n' "$note"; fi
+}
+
+# noisy_note JSON METRIC: if the repetitions of any benchmark of the report JSON varied by more
+# than POINTMASS_NOISY_CV (0.10: the coefficient of variation of METRIC, items_per_second or
+# cpu_time), prints a sentence saying so, on standard output and on standard error: another
+# load on the machine for part of the run (here every loop ran at about half its speed for
+# seconds at a time, with nothing of the project's running), so that loops timed in different
+# parts of it may compare wrongly, and the command is worth running again. Quiet: nothing.
+noisy_note() {
+  python3 - "$1" "$2" <<'PY'
+import json, os, sys
+data, metric = json.load(open(sys.argv[1])), sys.argv[2]
+cv = {b['run_name']: b[metric]
+      for b in data['benchmarks'] if b.get('aggregate_name') == 'cv' and metric in b}
 limit = float(os.environ.get('POINTMASS_NOISY_CV', '0.10'))
 noisy = sorted(((v, k) for k, v in cv.items() if v > limit), reverse=True)
 if noisy:
@@ -100,8 +110,9 @@ if noisy:
             f'varied by more than {limit:.0%} (the most, {noisy[0][0]:.0%}, {noisy[0][1]}), so '
             'loops timed in different parts of the run may compare wrongly; run the command '
             'again on a quiet machine.')
-    print(); print(note)
-    print(note, file=sys.stderr)"
+    print(note)
+    print(note, file=sys.stderr)
+PY
 }
 
 # publish_table DOC NAME FILE: prints FILE and writes it into DOC between the NAME markers.

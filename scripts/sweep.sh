@@ -49,6 +49,8 @@ echo "== benchmark: every variant, $repetitions interleaved repetitions"
   --benchmark_enable_random_interleaving=true --benchmark_min_time=0.05 \
   --benchmark_report_aggregates_only=true --benchmark_format=json \
   >"$build/variant_steps.json"
+# The sentence under the tables when the run was not quiet (nothing when it was).
+noisy_note "$build/variant_steps.json" cpu_time >"$build/noise.txt"
 
 # Medians in ns per particle-step: cpu_time (ns per iteration) / particle-steps per iteration.
 python3 - "$build" <<'PY'
@@ -312,6 +314,9 @@ for label, kind, scene in (("`ParticleSystem`, sparks", "ParticleSystem", "spark
                            ("`Particle`, spring", "Particle", "spring")):
     out.append(f"| {label} | {t(kind, scene, 'float/double-pos PerSecond + Euler') / t(kind, scene, 'double PerSecond + Euler'):.2f} |")
 out.append("")
+note = open(f"{build}/noise.txt").read().strip()
+if note:
+    out += [note, ""]
 
 text = open(doc).read()
 begin, end = "<!-- sweep:begin -->", "<!-- sweep:end -->"
