@@ -258,6 +258,35 @@ TEST_CASE("handles: a moved-from system starts a new table (no free slot it does
   }
 }
 
+TEST_CASE("handles: a free slot answers for nothing, whichever copy issued the handle") {
+  // A free slot already holds the generation its next particle will get, and its index is a
+  // free-list link: a handle issued by a copy (or before this state was assigned back) with
+  // that slot and generation once matched it, and find gave the link as a particle's index.
+  using Named = ParticleSystem<float, damping::None, position::Euler, features::Handles>;
+  Named live;
+  for (int i = 0; i < 4; ++i) live.spawn({float(i), 0, 0}, {});
+  live.kill(1);
+  live.kill(0);  // slots 1 and 0 free, generation 1 each; two particles left
+  const Named snapshot = live;
+  const Named::Handle later = live.spawn_handle(Vector3<float>{99, 0, 0}, Vector3<float>{});
+  REQUIRE(live.find(later) == std::optional<std::size_t>{2});
+  live = snapshot;  // back to before the spawn: `later`'s slot is free again
+  REQUIRE(live.size() == 2);
+  CHECK_FALSE(live.find(later).has_value());
+  CHECK_FALSE(live.contains(later));
+  // The same between a system and its copy: the copy's slot is free, its link `none`.
+  Named copy = snapshot;
+  const Named::Handle other = copy.spawn_handle(Vector3<float>{7, 0, 0}, Vector3<float>{});
+  Named original = snapshot;
+  original.kill(1);  // its slots: more free ones, none of them `other`'s particle
+  CHECK_FALSE(original.find(other).has_value());
+  CHECK_FALSE(snapshot.find(other).has_value());
+  CHECK(copy.find(other) == std::optional<std::size_t>{2});  // where it was issued, it answers
+  // Every particle of the snapshot still answers for itself through its own handle.
+  for (std::size_t i = 0; i < snapshot.size(); ++i)
+    CHECK(snapshot.find(snapshot.handle(i)) == std::optional<std::size_t>{i});
+}
+
 TEST_CASE("handles: a slot's generation wraps by retiring the slot, old handles stay dead") {
   // 8-bit generations: a slot serves generations 0 .. 254, then is retired.
   using Small = ParticleSystem<float, damping::None, position::Euler,

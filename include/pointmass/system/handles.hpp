@@ -11,7 +11,8 @@
 //
 // Owns: the Handle type and handle, find, contains and handle_table_bytes.
 // Must not include: particle_system.hpp, detail/system_state.hpp or another facet (it uses
-// only Base's arrays(), valid_index() and handle table; the table is detail/handle_table.hpp).
+// only Base's arrays(), size(), valid_index() and handle table; the table is
+// detail/handle_table.hpp).
 #pragma once
 
 #include <cstddef>
@@ -39,16 +40,22 @@ class SystemHandles : public Base {
                                           : Handle{};
   }
   /// The current index of the particle `handle` names, or nothing once it has died. O(1).
+  /// A slot answers only for the particle that names it back: a free slot (which already
+  /// holds its next particle's generation, and a free-list link where a live slot holds the
+  /// index) matches a handle issued by a copy of this system, or by this system before it was
+  /// assigned an earlier state, and must not answer for it.
   std::optional<std::size_t> find(const Handle& handle) const noexcept
     requires Base::Layout::has_handles
   {
-    return this->handles_.find(handle);
+    const std::optional<std::size_t> i = this->handles_.find(handle);
+    if (i && *i < this->size() && this->arrays().handle_slot[*i] == handle.slot) return i;
+    return std::nullopt;
   }
   /// True while the particle `handle` names is alive.
   bool contains(const Handle& handle) const noexcept
     requires Base::Layout::has_handles
   {
-    return this->handles_.find(handle).has_value();
+    return find(handle).has_value();
   }
   /// Bytes of the slot table beside the block (8 a slot with std::uint32_t generations).
   std::size_t handle_table_bytes() const noexcept
