@@ -95,7 +95,12 @@ class FixedStep {
       frame.alpha = accumulated_ / step_;
       return frame;
     }
-    accumulated_ += frame_time;
+    if (real_isfinite(accumulated_ + frame_time)) {
+      accumulated_ += frame_time;
+    } else {  // beyond R's range (a step near it): at least one step is due, so take it first
+      accumulated_ = (frame_time - step_) + accumulated_;
+      frame.steps = 1;
+    }
     while (accumulated_ >= step_ && frame.steps < max_steps_) {
       accumulated_ -= step_;
       ++frame.steps;
