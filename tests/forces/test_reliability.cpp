@@ -125,6 +125,33 @@ TEST_CASE_TEMPLATE("gravity beyond the range is reported, buoyancy with a huge d
   CHECK(force_on(buoyancy, body_at<R>({R(0), depth, R(0)})).y == R(0));
 }
 
+TEST_CASE_TEMPLATE("drag and buoyancy inside their ranges: no sum or product overflows first", R,
+                   float, double) {
+  const R max = std::numeric_limits<R>::max();
+  // Drag k1 = k2 = 0.9 max at |v| = 0.5: ||v|| (k1 + k2 ||v||) = 0.675 max is in the range, but
+  // k1 + k2 ||v|| = 1.35 max is not (it gave (-inf, NaN, NaN)).
+  const R k = R(0.9) * max;
+  const Vector3<R> drag = force_on(forces::Drag<R>(k, k), body_at<R>({}, {R(0.5), R(0), R(0)}));
+  CHECK(close(drag.x, R(-0.675) * max, R(4), R(0)));
+  CHECK(drag.y == R(0));
+  CHECK(drag.z == R(0));
+  // Inside the range the force is as before, bit for bit: v (-(k1 + k2 ||v||)).
+  const Vector3<R> v{R(3), R(-4), R(0)};  // ||v|| = 5 exactly
+  const Vector3<R> usual = force_on(forces::Drag<R>(R(0.5), R(0.25)), body_at<R>({}, v));
+  CHECK(usual == v * -(R(0.5) + R(0.25) * R(5)));
+  // Buoyancy with rho V beyond the range: g = 0 weighs nothing (it gave NaN), and rho V g
+  // within the range is that force (it gave inf).
+  const R big = std::is_same_v<R, float> ? R(1e30L) : R(1e300L);
+  const R small = R(1) / big;
+  const Particle<R> under = body_at<R>({R(0), R(-5), R(0)});  // fully submerged
+  CHECK(force_on(forces::Buoyancy<R>(R(1), big, R(0), big, R(0)), under).y == R(0));
+  CHECK(close(force_on(forces::Buoyancy<R>(R(1), big, R(0), big, small), under).y, big, R(4),
+              R(0)));
+  // The usual case as before: rho V g times the fraction, in that order.
+  const forces::Buoyancy<R> water(R(1), R(0.5), R(0), R(1000), R(9.807));
+  CHECK(force_on(water, under).y == R(1000) * R(0.5) * R(9.807) * R(1));
+}
+
 TEST_CASE_TEMPLATE("stiff springs: tiny steps, tiny inverse masses, huge stiffness and damping",
                    R, float, double) {
   const Vector3<R> x{R(1), R(0), R(0)};

@@ -120,7 +120,10 @@ class Drag {
   constexpr Vector3<R> force(const Vector3<R>&, const Vector3<R>& v, R, R) const noexcept {
     // k2 = 0 never multiplies the speed (which may be infinite for |v| beyond the largest R).
     const R per_speed = k2_ > R(0) ? k1_ + k2_ * magnitude(v) : k1_;
-    return v * -per_speed;
+    if (real_isfinite(per_speed)) return v * -per_speed;
+    // k1 + k2 ||v|| beyond the range: below a speed of 1 the force itself may not be, so its
+    // two terms are formed apart (each, and their sum, within the range whenever it is).
+    return v * -k1_ - v * (k2_ * magnitude(v));
   }
 
  private:
@@ -330,7 +333,27 @@ class Buoyancy {
     return s > R(1) ? R(1) : (s > R(0) ? s : R(0));
   }
   constexpr Vector3<R> force(const Vector3<R>& p, const Vector3<R>&, R, R) const noexcept {
-    return {R(0), density_ * volume_ * g_ * submerged_fraction(p.y), R(0)};
+    return {R(0), lift() * submerged_fraction(p.y), R(0)};
+  }
+  /// rho V g, the force when fully submerged. Formed left to right; where that leaves the
+  /// range (rho V overflowing, even with g = 0, which gave NaN), as the largest times the
+  /// smallest, then the third: each partial product is then within the range whenever the
+  /// whole is.
+  constexpr R lift() const noexcept {
+    const R usual = density_ * volume_ * g_;
+    if (real_isfinite(usual)) return usual;
+    R a = density_, b = volume_, c = g_;
+    const auto order = [](R& larger, R& smaller) {
+      if (larger < smaller) {
+        const R t = larger;
+        larger = smaller;
+        smaller = t;
+      }
+    };
+    order(a, b);
+    order(b, c);
+    order(a, b);  // a >= b >= c >= 0
+    return a * c * b;
   }
 
  private:
