@@ -431,6 +431,68 @@ TEST_CASE("spawn_burst takes its particles back when a rejected one's report thr
   CHECK(system.position(4) == Vector3<float>{1, 2, 0});
 }
 
+TEST_CASE("spawn_burst's generator may not remove or step, and replacing the particles ends it") {
+  // The burst's particles are the last ones: a generator that killed one moved another
+  // particle among them, and the rollback after a throw then took the wrong ones away; one
+  // that assigned the system another state had that state's particles removed.
+  using Game = ParticleSystem<float, damping::None, position::Euler, features::Lifetime>;
+  Game system = three_particles<Game>();
+  const Game before = system;
+  std::string kill_message;
+  std::string step_message;
+  std::string clear_message;
+  const auto refused = [&](std::size_t k) {
+    if (k == 1) {
+      kill_message = invalid_argument_of([&] { system.kill(0); });
+      step_message = invalid_argument_of([&] { system.step(0.1f); });
+      clear_message = invalid_argument_of([&] { system.clear(); });
+    }
+    return std::tuple{Vector3<float>{100.0f + float(k), 0, 0}, Vector3<float>{}};
+  };
+  CHECK(system.spawn_burst(3, refused) == 3);
+  CHECK(kill_message.find("kill: argument 'index' = 0 must be not removed during "
+                          "spawn_burst's generator") != std::string::npos);
+  CHECK(step_message.find("must be not stepped during spawn_burst's generator") !=
+        std::string::npos);
+  CHECK(clear_message.find("during spawn_burst's generator") != std::string::npos);
+  REQUIRE(system.size() == 6);  // nothing removed: the first three, then the burst's
+  for (std::size_t i = 0; i < 3; ++i) {
+    CHECK(system.position(i) == before.position(i));
+    CHECK(system.position(3 + i) == Vector3<float>{100.0f + float(i), 0, 0});
+  }
+  // A refused kill, then a throw: the rollback leaves exactly the particles of before.
+  Game rolled = before;
+  CHECK_THROWS_AS((void)rolled.spawn_burst(3, [&](std::size_t k) {
+    if (k == 1) {
+      static_cast<void>(invalid_argument_of([&] { rolled.kill(0); }));
+      throw std::runtime_error("generator");
+    }
+    return std::tuple{Vector3<float>{100.0f + float(k), 0, 0}, Vector3<float>{}};
+  }), std::runtime_error);
+  CHECK(same_particles(rolled, before));
+  // The generator assigns the system another state, then throws: that state stays whole.
+  Game other = three_particles<Game>();
+  other.kill(0);
+  for (int i = 0; i < 3; ++i) other.spawn({-1.0f - float(i), 0, 0}, {});  // five, not before's
+  const Game other_before = other;
+  Game replaced = before;
+  CHECK_THROWS_AS((void)replaced.spawn_burst(3, [&](std::size_t k) {
+    if (k == 1) {
+      replaced = other;
+      throw std::runtime_error("generator");
+    }
+    return std::tuple{Vector3<float>{100.0f + float(k), 0, 0}, Vector3<float>{}};
+  }), std::runtime_error);
+  CHECK(same_particles(replaced, other_before));
+  // Without a throw the burst ends at the replacement, and names none as its own.
+  Game ended = before;
+  CHECK(ended.spawn_burst(3, [&](std::size_t k) {
+    if (k == 1) ended = other;
+    return std::tuple{Vector3<float>{100.0f + float(k), 0, 0}, Vector3<float>{}};
+  }) == 0);
+  CHECK(same_particles(ended, other_before));
+}
+
 namespace {
 std::vector<ContractViolation> burst_reports;
 bool throw_after_report = false;

@@ -240,15 +240,24 @@ class ParticleSystem
   /// they are the last ones, [size() - returned, size()), until the next removal. If the
   /// report of a rejected one throws (the default handler) or the generator throws, the
   /// particles this call added are removed again before the exception leaves: the system
-  /// holds what it held before the call (its capacity may have grown).
+  /// holds what it held before the call (its capacity may have grown). Inside the generator
+  /// removing (kill, kill_if, clear) or stepping is refused; a generator that replaces the
+  /// particles whole (assigns, swaps or moves the system) ends the burst: it returns 0, and
+  /// a throw after that leaves the particles as they are.
   template <class Generator>
   std::size_t spawn_burst(std::size_t count, Generator&& generator) {
     State::make_room(count);
     const std::size_t before = size();
-    const auto spawn_all = [&] {
+    const std::uint16_t replacements = State::replacements_;
+    const auto spawn_all = [&]() -> std::size_t {
+      // Removals and steps are refused while the burst runs (its particles are the last ones).
+      const typename State::PassScope burst(removing_, detail::RemovalPass::burst);
       std::size_t spawned = 0;
       for (std::size_t k = 0; k < count; ++k) {
         decltype(auto) made = generator(k);
+        // The generator replaced the particles whole (assigned, swapped or moved the system):
+        // those this call added left with them, and the burst ends.
+        if (State::replacements_ != replacements) return 0;
         const detail::ReportingElement reporting("spawn_burst", k);
         std::size_t i;
         if constexpr (std::is_convertible_v<decltype(made), const particle_type&>) {
@@ -265,7 +274,10 @@ class ParticleSystem
       return spawn_all();
     } catch (...) {
       // The last particles are this call's: removing the last moves no other particle.
-      while (size() > before) State::remove(size() - 1);
+      // (Particles replaced whole by the generator are not this call's: left as they are.)
+      if (State::replacements_ == replacements) {
+        while (size() > before) State::remove(size() - 1);
+      }
       throw;
     }
 #else

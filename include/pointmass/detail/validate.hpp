@@ -242,7 +242,7 @@ constexpr bool check_strided_buffer(const char* function, std::size_t available,
 /// A pass of a system that removes particles and calls the caller's code for each: an expiry
 /// callback (step with on_expire), kill_if's predicate. Inside one, the calls that remove or
 /// step particles are refused (the pass is walking the indices); spawning is allowed.
-enum class RemovalPass : unsigned char { none, expiry, predicate };
+enum class RemovalPass : unsigned char { none, expiry, predicate, burst };
 
 /// Not inside a removal pass, for a call that removes particles; `index` is the particle the
 /// call would have removed.
@@ -251,6 +251,9 @@ constexpr bool check_not_removing(const char* function, RemovalPass pass, std::s
   report_scalar(function, "index",
                 pass == RemovalPass::expiry
                     ? "not removed during an expiry callback (spawn there; kill after the step)"
+                : pass == RemovalPass::burst
+                    ? "not removed during spawn_burst's generator (kill after spawn_burst "
+                      "returns)"
                     : "not removed during kill_if's predicate (return true to remove the "
                       "particle it is asked about)",
                 index);
@@ -265,6 +268,9 @@ constexpr bool check_not_stepping(const char* function, const char* argument, Re
   report_scalar(function, argument,
                 pass == RemovalPass::expiry
                     ? "not stepped during an expiry callback (step after the step returns)"
+                : pass == RemovalPass::burst
+                    ? "not stepped during spawn_burst's generator (step after spawn_burst "
+                      "returns)"
                     : "not stepped during kill_if's predicate (step after kill_if returns)",
                 value);
   return false;
