@@ -493,6 +493,15 @@ TEST_CASE("spawn_burst's generator may not remove or step, and replacing the par
   CHECK(same_particles(ended, other_before));
 }
 
+TEST_CASE("begin_step names itself in its report, step names step") {
+  ParticleSystem<float> system = three_particles<ParticleSystem<float>>();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  CHECK(invalid_argument_of([&] { (void)system.begin_step(nan); })
+            .find("begin_step: argument 'duration' = nan") != std::string::npos);
+  CHECK(invalid_argument_of([&] { system.step(nan); })
+            .find("pointmass: step: argument 'duration' = nan") != std::string::npos);
+}
+
 namespace {
 std::vector<ContractViolation> burst_reports;
 bool throw_after_report = false;

@@ -80,7 +80,7 @@ namespace detail {
 /// runs it; false when there was nothing to do (see begin_step).
 template <class ExecutionPolicy, class System, class R>
 bool step_chunks(ExecutionPolicy&& policy, System& system, R duration) {
-  if (!system.begin_step(duration)) return false;
+  if (!system.begin_step(duration, "step")) return false;
   constexpr std::size_t chunk = 16384;
   const typename System::Arrays& arrays = system.arrays();
   const typename System::StepParameters parameters = system.step_parameters(duration);

@@ -392,11 +392,12 @@ class SystemState {
     }
     return parameters;
   }
-  bool begin_step(R duration) const {
+  // `function`: the call a report names (step's own, or begin_step called by the user).
+  bool begin_step(R duration, const char* function = "begin_step") const {
 #if POINTMASS_HOST_CHECKS
-    if (!check_duration("step", duration)) return false;
+    if (!check_duration(function, duration)) return false;
 #endif
-    if (!check_not_stepping("step", "duration", removing_, duration)) return false;
+    if (!check_not_stepping(function, "duration", removing_, duration)) return false;
     return !real_equal(duration, R(0)) && size() != 0;
   }
   // The damping_retention column may no longer hold d^t for retention_duration_ (written
@@ -411,7 +412,7 @@ class SystemState {
   }
   // Steps every particle, walking in the direction due; false when there was nothing to do.
   bool walk(R duration) {
-    if (!begin_step(duration)) return false;
+    if (!begin_step(duration, "step")) return false;
     const StepParameters parameters = step_parameters(duration);
     (backward_ ? Kernel::step_range_backward : Kernel::step_range)(arrays(), 0, size(),
                                                                    parameters);
