@@ -503,7 +503,7 @@ TEST_CASE("FixedStep: frame times whose sum is beyond the clock's range stay fin
   FixedStep<float> wide(0.6f * most, 8);
   CHECK(wide.advance(0.5f * most).steps == 0);
   CHECK(wide.advance(0.9f * most).steps == 2);  // 1.4 max in all: two steps, 0.2 max left
-  CHECK(wide.accumulated() == doctest::Approx(0.2f * most).epsilon(1e-5));
+  CHECK(double(wide.accumulated()) == doctest::Approx(double(0.2f * most)).epsilon(1e-5));
   // The largest frame time on a game's step: the cap, the rest dropped in whole steps.
   for (FixedStep<float> clock : {FixedStep<float>(1.0f / 60, 8), FixedStep<float>()}) {
     clock.advance(0.01f);
