@@ -239,8 +239,9 @@ constexpr bool check_strided_buffer(const char* function, std::size_t available,
   return false;
 }
 
-/// A pass of a system that removes particles and calls the caller's code for each: an expiry
-/// callback (step with on_expire), kill_if's predicate. Inside one, the calls that remove or
+/// A pass of a system that calls the caller's code for each particle while it removes or
+/// adds them: an expiry callback (step with on_expire), kill_if's predicate, spawn_burst's
+/// generator (whose particles must stay the last ones). Inside one, the calls that remove or
 /// step particles are refused (the pass is walking the indices); spawning is allowed.
 enum class RemovalPass : unsigned char { none, expiry, predicate, burst };
 
