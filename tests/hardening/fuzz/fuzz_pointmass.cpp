@@ -1019,7 +1019,7 @@ void fuzz_system(Input& in) {
         const int pieces = in.byte() % 6 + 1;
         const bool work = system.begin_step(t);
         if (!real_isfinite(t) || t < R(0)) {
-          expect_rejected("step", "duration", t);
+          expect_rejected("begin_step", "duration", t);
           break;
         }
         if (!work) break;
