@@ -288,15 +288,13 @@ out.append("| ratio of times | float | double |")
 out.append("|---|---|---|")
 def row(label, f):
     out.append(f"| {label} | " + " | ".join(f(real) for real in ("float", "double")) + " |")
-row("`Particle`, `None + Kinematic` / `None + Euler`",
-    lambda r: span([t("Particle", s, f"{r} None + Kinematic") / t("Particle", s, f"{r} None + Euler")
-                    for s in ("ballistic", "spring")]))
-row("`Particle`, `Exact + Exact` / `PerSecond + Kinematic`",
-    lambda r: span([t("Particle", s, f"{r} Exact + Exact") / t("Particle", s, f"{r} PerSecond + Kinematic")
-                    for s in ("ballistic", "spring")]))
-row("`Particle`, `Exact + Exact` / `PerSecond + Euler`",
-    lambda r: span([t("Particle", s, f"{r} Exact + Exact") / t("Particle", s, f"{r} PerSecond + Euler")
-                    for s in ("ballistic", "spring")]))
+def particle_row(a, b):  # pair a over pair b, Particle, both scenes
+    row(f"`Particle`, `{a}` / `{b}`",
+        lambda r: span([t("Particle", s, f"{r} {a}") / t("Particle", s, f"{r} {b}")
+                        for s in ("ballistic", "spring")]))
+particle_row("None + Kinematic", "None + Euler")
+particle_row("Exact + Exact", "PerSecond + Kinematic")
+particle_row("Exact + Exact", "PerSecond + Euler")
 row("`Particle`, `D + SemiImplicit` / `D + Euler`, every damping D",
     lambda r: span([t("Particle", s, v.replace("Euler", "SemiImplicit")) / t("Particle", s, v)
                     for s in ("ballistic", "spring") for v in pairs(r) if v.endswith("+ Euler")]))
