@@ -89,6 +89,98 @@ constexpr OscillatorState<R> oscillate(R w0_squared, R gamma, const Vector3<R>& 
   }
   return {x0 * ec + (v0 + x0 * gamma) * es, v0 * ec - (x0 * w0_squared + v0 * gamma) * es};
 }
+
+/// The oscillator's response to a push, scaled by the step: with psi(s) the velocity after s
+/// of a body released at rest from x = 0 with v = 1 (e^(-gamma s) S of oscillate), Q(t) the
+/// integral of psi over [0, t] and Q2(t) the integral of Q,
+///   psi_over_t = psi(t) / t   (1 at t -> 0),
+///   q          = Q(t) / t^2   (1/2 at t -> 0; Q = (1 - x(t) from x0 = 1, v0 = 0) / w0^2),
+///   q2         = Q2(t) / t^3  (1/6 at t -> 0).
+/// A constant acceleration a held over the step adds a Q to the position and a psi to the
+/// velocity (exactly), and x(t) - x0 - v0 t = -w0^2 Q x0 - (w0^2 Q2 + 2 gamma Q) v0, so
+/// neither needs 1 - x(t) or x(t) - x0 - v0 t formed as a difference, which cancels when
+/// w0 t is small (to nothing at all once w0^2 t^2 is below epsilon). Dimensionless functions
+/// of a = w0 t and b = gamma t, by region:
+///   * a <= 1 and b <= 1: their Taylor series (the coefficients by the oscillator's
+///     recurrence);
+///   * over-damped with w0 <= gamma / 2 (b > 1): closed forms in e^(-S) and e^(-F), S and F
+///     the slow and fast decay rates times t (their divided differences by F - S >= 1.7 b);
+///   * otherwise (then a > 1/2): the differences themselves, of oscillate's closed form, which
+///     lose at most what a^2 >= 1/4 divides.
+/// No division by w0^2 or gamma anywhere (w0 = 0 and gamma = 0 are fine); t > 0.
+template <Real R>
+struct PushResponse {
+  R psi_over_t;
+  R q;
+  R q2;
+};
+
+template <Real R>
+constexpr PushResponse<R> push_response(R w0_squared, R gamma, R t) noexcept {
+  const R w0 = real_sqrt(w0_squared);
+  const R a = w0 * t;
+  const R b = gamma * t;
+  if (a <= R(2) && b <= R(2)) {
+    // psi(s) = sum over n >= 1 of p_n (s/t)^n t, p_0 = 0, p_1 = 1, and the equation
+    // psi'' = -w0^2 psi - 2 gamma psi' gives p_(n+1) (n + 1) n = -a^2 p_(n-1) - 2 b n p_n.
+    // Integrating term by term divides p_n by (n + 1) for Q and by (n + 1)(n + 2) for Q2.
+    // With a, b <= 1 the terms fall at least as 2^n / n!: the count leaves less than an ulp.
+    constexpr int terms = std::numeric_limits<R>::digits / 2 + 8;
+    R previous = R(0);
+    R p = R(1);
+    PushResponse<R> r{R(0), R(0), R(0)};
+    for (int n = 1; n <= terms; ++n) {
+      const R rn = static_cast<R>(n);
+      r.psi_over_t += p;
+      r.q += p / (rn + R(1));
+      r.q2 += p / ((rn + R(1)) * (rn + R(2)));
+      const R next = -(a * a * previous + R(2) * b * rn * p) / ((rn + R(1)) * rn);
+      previous = p;
+      p = next;
+    }
+    return r;
+  }
+  if (w0 < gamma) {
+    // Over-damped, gamma - lambda = w0^2 / (gamma + lambda) and gamma + lambda the rates:
+    // psi(s) = (e^(-slow s) - e^(-fast s)) / (2 lambda), so with G(x) = (1 - e^(-x)) / x and
+    // H(x) = (x - 1 + e^(-x)) / x^2 (G(0) = 1, H(0) = 1/2), S = slow t, F = fast t and
+    // L = lambda t = (F - S) / 2:
+    //   psi / t = e^(-S) (1 - e^(-2 L)) / (2 L),  q = (G(S) - G(F)) / (2 L),
+    //   q2 = (H(S) - H(F)) / (2 L),
+    // well conditioned for L >= 1/2 and S < 1 (then F >= S + 1: G and H differ by a part
+    // of themselves).
+    const R r = w0 / gamma;
+    const R root = real_sqrt((R(1) - r) * (R(1) + r));
+    const R s = a * r / (R(1) + root);  // slow t
+    const R l = b * root;                // lambda t
+    if (l >= R(0.5) && s < R(1)) {
+      const R f = s + R(2) * l;  // fast t
+      const auto g = [](R x) { return x > R(0) ? -real_expm1(-x) / x : R(1); };
+      const auto h = [](R x) {
+        if (x < R(0.5)) {  // the series of (e^(-x) - 1 + x) / x^2: sum of (-x)^k / (k + 2)!
+          R term = R(1) / R(2);
+          R sum = R(0);
+          for (int k = 0; k < std::numeric_limits<R>::digits / 2; ++k) {
+            sum += term;
+            term *= -x / static_cast<R>(k + 3);
+          }
+          return sum;
+        }
+        return ((x + real_expm1(-x)) / x) / x;
+      };
+      const R two_l = R(2) * l;
+      return {-real_exp(-s) * real_expm1(-two_l) / two_l, (g(s) - g(f)) / two_l,
+              (h(s) - h(f)) / two_l};
+    }
+  }
+  // Here a^2 >= 2 (see above): x(t) from (1, 0) and from (0, 1) in one call (x0 = (1, 0, 0), v0 = (0, 1, 0)).
+  const OscillatorState<R> unit = oscillate(w0_squared, gamma, Vector3<R>{R(1), R(0), R(0)},
+                                            Vector3<R>{R(0), R(1), R(0)}, t);
+  const R a_squared = w0_squared * t * t;
+  const R psi_over_t = unit.position.y / t;
+  const R q = (R(1) - unit.position.x) / a_squared;
+  return {psi_over_t, q, ((R(1) - psi_over_t) - R(2) * b * q) / a_squared};
+}
 }  // namespace detail
 
 template <Real R>
@@ -170,12 +262,13 @@ class StiffSpringParameters {
 /// its accumulated forces over m, held constant over the step. With w0^2 = k / m:
 ///   * w0 t >= 1 (the spring is stiff for this step): exact for constant a. The body
 ///     oscillates about the shifted rest point anchor + a / w0^2, in closed form.
-///   * w0 t < 1: Strang splitting, v += a t / 2, then (x, v) move exactly along the damped
-///     oscillator for t, then v += a t / 2: second order in t, never dividing by w0^2.
-/// So with the spring the only force (a = 0), the position and velocity after every step are
-/// the closed form's at any step: no stability limit, no period error; with gravity (constant
-/// a) they are exact at steps w0 t >= 1 and second-order accurate below; with forces that
-/// change during the step, second order.
+///   * w0 t < 1: the spring's closed form from (x, v), plus what a constant a adds to it
+///     (a Q(t) to x and a psi(t) to v, detail::push_response): exact for constant a too,
+///     and never dividing by w0^2 (the rest point is far away, or nowhere for k = 0).
+/// So with the spring the only force (a = 0), or with a constant a (gravity), the position
+/// and velocity after every step are the closed form's at any step: no stability limit, no
+/// period error, the terminal velocity of a strongly damped body; with forces that change
+/// during the step, the error of holding them constant over it.
 /// The body's damping policy is not applied (the spring's damping c is the damping); as
 /// `integrate` does, a zero step changes nothing (an immovable body's accumulator included),
 /// and otherwise the accumulator is cleared and an immovable body does not move. A negative
@@ -204,10 +297,13 @@ class StiffSpring : public StiffSpringParameters<R> {
                             body.velocity(), duration);
       s.position += rest;
     } else {
-      const Vector3<R> half_kick = a * (duration / R(2));
-      s = this->exact_state(body.position(), body.velocity() + half_kick, inverse_mass,
-                            duration);
-      s.velocity += half_kick;
+      // The spring alone, plus what a constant a adds along the oscillator: a Q to the
+      // position, a psi to the velocity (push_response), with no division by w0^2.
+      const R gamma = this->c_ * inverse_mass / R(2);
+      const detail::PushResponse<R> push = detail::push_response(w0_squared, gamma, duration);
+      s = this->exact_state(body.position(), body.velocity(), inverse_mass, duration);
+      s.position += a * (push.q * duration * duration);
+      s.velocity += a * (push.psi_over_t * duration);
     }
     if (!pointmass::detail::check_state("StiffSpring::advance", s.position, s.velocity)) return;
     body.set_position(s.position);
@@ -215,17 +311,6 @@ class StiffSpring : public StiffSpringParameters<R> {
     body.clear_accumulator();
   }
 };
-
-namespace detail {
-/// About the cube root of epsilon: below this w0 t and gamma t, the difference quotient of
-/// the closed form loses more to cancellation than the limit t -> 0 is away.
-template <Real R>
-inline constexpr R short_step = [] {
-  R x = R(1);
-  while (x * x * x > std::numeric_limits<R>::epsilon()) x /= R(2);
-  return x;
-}();
-}  // namespace detail
 
 /// The reference engine's "fake" stiff spring as a force, kept for compatibility; prefer
 /// StiffSpring::advance. What it does wrong: for a step t it adds the force that brings a body
@@ -237,10 +322,13 @@ inline constexpr R short_step = [] {
 /// (it does not converge as t shrinks) and a wrong amplitude. What it does right, unlike the
 /// reference engine's: no NaN when over-damped (sqrt(4 k - c^2) there), a force when
 /// critically damped. Stability of its step map: see docs/forces.md.
-/// For w0 t and gamma t below about the cube root of epsilon the force is its limit as
-/// t -> 0, -(k x + c v) / 2 (half the spring's force: that is its error, seen at small steps),
-/// since the difference quotient would cancel; it never divides by t^2 or by inverse_mass t. Nothing on an immovable body, nothing for t = 0. Range: k |x| + c |v|
-/// below the largest R, and exact_state's.
+/// The difference quotient is not formed (it cancels when w0 t is small, to nothing once
+/// w0^2 t^2 is below epsilon, whatever gamma t is): the force is computed as
+/// -k (Q / t^2) x0 - (c Q / t^2 + k t Q2 / t^3) v0 (detail::push_response), whose limit as
+/// t -> 0 is -(k x + c v) / 2 (half the spring's force: that is its error, seen at small
+/// steps); it never divides by t^2 or by inverse_mass t. Nothing on an immovable body,
+/// nothing for t = 0. Range: k |x| + (c + k t) |v| below the largest R; k / m and c / m
+/// finite, and exact_state's.
 template <Real R>
 class PositionOnlyStiffSpring : public StiffSpringParameters<R> {
  public:
@@ -252,13 +340,9 @@ class PositionOnlyStiffSpring : public StiffSpringParameters<R> {
     const R w0_squared = this->k_ * inverse_mass;
     const R gamma = this->c_ * inverse_mass / R(2);
     const Vector3<R> x = p - this->anchor_;
-    if (real_sqrt(w0_squared) * duration < detail::short_step<R> &&
-        gamma * duration < detail::short_step<R>) {
-      return -(x * this->k_ + v * this->c_) / R(2);
-    }
-    const OscillatorState<R> s = detail::oscillate(w0_squared, gamma, x, v, duration);
-    const Vector3<R> mean_acceleration = ((s.position - x) / duration - v) / duration;
-    return mean_acceleration / inverse_mass;
+    // m (x(t) - x0 - v0 t) / t^2 = -k Q x0 / t^2 - (k Q2 / t^2 + c Q / t^2) v0 (push_response).
+    const detail::PushResponse<R> push = detail::push_response(w0_squared, gamma, duration);
+    return -(x * (this->k_ * push.q) + v * (this->c_ * push.q + this->k_ * duration * push.q2));
   }
 };
 
