@@ -322,11 +322,13 @@ struct SystemLayout {
     }
   }
   /// True for the columns that hold parts of a damping state that must agree with each
-  /// other (d, ln d and the d^t kept for the last step length): ParticleSystem::column gives
-  /// them read-only (set_damping writes them together).
+  /// other (d, ln d and the d^t kept for the last step length), and for the handle table's
+  /// slot of each particle, which the table itself indexes (a slot written through a span
+  /// would have kill read and write outside the table): ParticleSystem::column gives them
+  /// read-only (set_damping writes the damping columns together; spawn and kill the slots).
   template <Column C>
   static constexpr bool read_only =
-      C == Column::damping_retention ||
+      C == Column::handle_slot || C == Column::damping_retention ||
       ((log_damping_state || per_particle_retention) && C == Column::damping) ||
       (log_damping_state && (C == Column::damping_log_hi || C == Column::damping_log_lo));
   /// The element type of user column I.

@@ -267,13 +267,17 @@ struct PositionStorage {
   /// exact) and round_offset(s, e) (round_once, or round_via_odd: the same T without a
   /// branch), so a difference rounded to an element and then to T is not rounded twice.
   /// Exact when the true offset is a T (then it is an element too, and IEEE subtraction
-  /// returns it exactly).
+  /// returns it exactly). A T wider than the element takes the difference in T: rounded once
+  /// there, not first to the element.
   template <Real T = float, bool BranchFree = false>
   POINTMASS_HD static constexpr T relative(element p, value origin) noexcept {
-    const element s = p - origin;
-    if constexpr (std::numeric_limits<element>::digits <= std::numeric_limits<T>::digits) {
-      return static_cast<T>(s);
+    if constexpr (std::numeric_limits<element>::digits < std::numeric_limits<T>::digits) {
+      return static_cast<T>(p) - static_cast<T>(origin);
+    } else if constexpr (std::numeric_limits<element>::digits ==
+                         std::numeric_limits<T>::digits) {
+      return static_cast<T>(p - origin);
     } else {
+      const element s = p - origin;
       const element b = s - p;
       const element e = (p - (s - b)) + (-origin - b);
       return round_offset<T, BranchFree>(s, e);
@@ -320,6 +324,11 @@ struct PositionStorage<Compensated<R>> {
   /// does the same.
   template <Real T = float, bool BranchFree = false>
   POINTMASS_HD static constexpr T relative(R hi, R lo, value origin) noexcept {
+    if constexpr (std::numeric_limits<value>::digits < std::numeric_limits<T>::digits) {
+      // T wider than the pair's value: hi + lo is a T (as it is a value), and the difference
+      // in T is rounded once there.
+      return (static_cast<T>(hi) + static_cast<T>(lo)) - static_cast<T>(origin);
+    }
     const value h = static_cast<value>(hi);
     const value l = static_cast<value>(lo);
     // The usual case first: hi + lo held exactly by the wider type (lo within its digits of

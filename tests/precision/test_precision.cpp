@@ -685,6 +685,65 @@ TEST_CASE("spawn(particle) copies a compensated position's error term: the syste
   CHECK(system_matches(system, 0, particle));
 }
 
+TEST_CASE("copy_positions of compensated positions: hi + lo, rounded once to the buffer's type") {
+  // 1e6 + 0.01 m: float keeps 1e6, lo the 0.01. A double buffer gets the whole position, as
+  // position(i) gives it; a float buffer hi + lo rounded once (here 1e6). Before, every
+  // buffer got hi alone.
+  pm::ParticleSystem<CompensatedPositions> system(2);
+  system.spawn({1.0e6 + 0.01, -3.0e7 - 0.5, 0.25}, {});
+  system.spawn({-1.0e6 - 0.01, 7.0, 4.0e6 + 0.125}, {});
+  REQUIRE(system.column<pm::Column::position_error_x>()[0] != 0.0f);
+  std::vector<double> packed(6, -1.0);
+  system.copy_positions(std::span<double>(packed));
+  struct DoubleVertex {
+    double x, y, z;
+  };
+  std::vector<DoubleVertex> vertices(2);
+  system.copy_positions(std::span<DoubleVertex>(vertices));
+  std::vector<float> floats(6, -1.0f);
+  system.copy_positions(std::span<float>(floats));
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Vector3<double> p = system.position(i);
+    CAPTURE(i);
+    CHECK(same_bits(Vector3<double>{packed[3 * i], packed[3 * i + 1], packed[3 * i + 2]}, p));
+    CHECK(same_bits(Vector3<double>{vertices[i].x, vertices[i].y, vertices[i].z}, p));
+    CHECK(same_bits(Vector3<float>{floats[3 * i], floats[3 * i + 1], floats[3 * i + 2]},
+                    Vector3<float>{float(p.x), float(p.y), float(p.z)}));
+  }
+  CHECK(packed[0] != 1.0e6);  // the error term is in it
+}
+
+TEST_CASE("render-relative into a type wider than the stored position: rounded once, in it") {
+  // float positions, a double offset: 2^25 - 1 is a double, not a float; rounded to float
+  // first it came out 2^25.
+  pm::ParticleSystem<float> system(1);
+  system.spawn({33554432.0f, 0.0f, -0.0f}, {});
+  CHECK(system.position_relative_to<double>(0, {1.0f, 0.0f, 0.0f}).x == 33554431.0);
+  pm::Particle<float> particle;
+  particle.set_position({33554432.0f, 0.0f, 0.0f});
+  CHECK(particle.position_relative_to<double>({1.0f, 0.0f, 0.0f}).x == 33554431.0);
+  if constexpr (std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits) {
+    // double positions, a long double offset: 2^60 - 1.
+    pm::Particle<DoublePositions> wide;
+    wide.set_position({1152921504606846976.0, 0.0, 0.0});
+    CHECK(wide.position_relative_to<long double>({1.0, 0.0, 0.0}).x == 1152921504606846975.0L);
+    // compensated float positions read as double, a long double offset: 2^60 - 1 too.
+    pm::Particle<CompensatedPositions> pair;
+    pair.set_position({1152921504606846976.0, 0.0, 0.0});
+    CHECK(pair.position_relative_to<long double>({1.0, 0.0, 0.0}).x == 1152921504606846975.0L);
+  }
+}
+
+TEST_CASE("features::Handles: the handle slot column is read-only (the table indexes itself with it)") {
+  using System = pm::ParticleSystem<float, pm::damping::PerSecond, pm::position::Euler,
+                                    pm::features::Handles>;
+  System system(1);
+  system.spawn({}, {});
+  using Span = decltype(system.column<pm::Column::handle_slot>());
+  static_assert(std::is_const_v<typename Span::element_type>);
+  CHECK(system.column<pm::Column::handle_slot>().size() == 1);
+}
+
 // --- the game features with wide positions -----------------------------------------------------
 
 struct OwnerTag {};

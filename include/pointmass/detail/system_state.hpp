@@ -160,13 +160,14 @@ class SystemState {
     if constexpr (has_handles) handles_.reserve(capacity);
     block_ = std::move(grown);
   }
-  // Full: doubles the capacity (at least 16), up to max_size().
+  // Full: doubles the capacity (at least 16), up to max_size() (the first 16 too: a user
+  // column of huge elements can make max_size() smaller).
   void grow() {
     const std::size_t current = capacity();
     if (current >= max_size()) throw_length_error("spawn", current + 1);
-    reserve_checked(current < 8                  ? 16
-                    : current > max_size() / 2 ? max_size()
-                                               : 2 * current);
+    const std::size_t doubled = current < 8 ? 16 : current > max_size() / 2 ? max_size()
+                                                                             : 2 * current;
+    reserve_checked(std::min(doubled, max_size()));
   }
   // Room for `count` more particles at once (a burst): at least doubling, as grow() would.
   void make_room(std::size_t count) {
@@ -495,7 +496,13 @@ class SystemState {
     if constexpr (has_interpolation) current = real_equal(alpha, R(1));
     if (current) {
       for (std::size_t i = first; i < last; ++i) {
-        store_one(i, a.position_x[i], a.position_y[i], a.position_z[i]);
+        if constexpr (compensated) {  // hi + lo, in the wider type: the store rounds it once
+          store_one(i, Storage::value_of(a.position_x[i], a.position_error_x[i]),
+                    Storage::value_of(a.position_y[i], a.position_error_y[i]),
+                    Storage::value_of(a.position_z[i], a.position_error_z[i]));
+        } else {
+          store_one(i, a.position_x[i], a.position_y[i], a.position_z[i]);
+        }
       }
       return;
     }

@@ -58,7 +58,8 @@ class SystemColumns : public Base {
 
   /// Column C of the live particles, for any column this configuration stores. The damping
   /// columns of PerSecond and Exact (d and ln d as hi + lo, which must agree) are read-only:
-  /// set_damping(i, d) writes them.
+  /// set_damping(i, d) writes them; so is features::Handles' handle_slot (the table's own
+  /// index: spawn and kill keep it).
   template <Column C>
     requires stores<C>
   std::span<std::conditional_t<Layout::template read_only<C>, const element_t<C>, element_t<C>>>

@@ -55,8 +55,11 @@ class SystemInterpolation : public Base {
       return {};
     }
     Vector3<position_element> out{};
-    this->for_each_output_position(alpha, i, i + 1,
-                                   [&](std::size_t, auto x, auto y, auto z) { out = {x, y, z}; });
+    // (compensated positions at alpha 1: hi + lo rounded to the element)
+    this->for_each_output_position(alpha, i, i + 1, [&](std::size_t, auto x, auto y, auto z) {
+      out = {static_cast<position_element>(x), static_cast<position_element>(y),
+             static_cast<position_element>(z)};
+    });
     return out;
   }
   /// As copy_positions (system/hand_off.hpp), with the positions at the fraction alpha of
