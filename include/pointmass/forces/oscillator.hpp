@@ -101,13 +101,16 @@ constexpr OscillatorState<R> oscillate(R w0_squared, R gamma, const Vector3<R>& 
 /// neither needs 1 - x(t) or x(t) - x0 - v0 t formed as a difference, which cancels when
 /// w0 t is small (to nothing at all once w0^2 t^2 is below epsilon). Dimensionless functions
 /// of a = w0 t and b = gamma t, by region:
-///   * a <= 1 and b <= 1: their Taylor series (the coefficients by the oscillator's
+///   * a <= 2 and b <= 2: their Taylor series (the coefficients by the oscillator's
 ///     recurrence);
-///   * over-damped with w0 <= gamma / 2 (b > 1): closed forms in e^(-S) and e^(-F), S and F
-///     the slow and fast decay rates times t (their divided differences by F - S >= 1.7 b);
-///   * otherwise (then a > 1/2): the differences themselves, of oscillate's closed form, which
-///     lose at most what a^2 >= 1/4 divides.
-/// No division by w0^2 or gamma anywhere (w0 = 0 and gamma = 0 are fine); t > 0.
+///   * over-damped beyond, with lambda t >= 1/2 and S < 1: closed forms in e^(-S) and
+///     e^(-F), S and F the slow and fast decay rates times t (divided differences over
+///     F - S >= 1, which do not cancel);
+///   * otherwise (then a^2 >= 2): the differences themselves, of oscillate's closed form,
+///     which lose at most what a^2 divides.
+/// No division by w0^2 or gamma anywhere (w0 = 0 and gamma = 0 are fine); t > 0. Within 16
+/// epsilons of the exact values for a <= 2 and any b (tests/forces/
+/// test_stiff_spring_accuracy.cpp); beyond, as oscillate's phase allows.
 template <Real R>
 struct PushResponse {
   R psi_over_t;
@@ -124,8 +127,9 @@ constexpr PushResponse<R> push_response(R w0_squared, R gamma, R t) noexcept {
     // psi(s) = sum over n >= 1 of p_n (s/t)^n t, p_0 = 0, p_1 = 1, and the equation
     // psi'' = -w0^2 psi - 2 gamma psi' gives p_(n+1) (n + 1) n = -a^2 p_(n-1) - 2 b n p_n.
     // Integrating term by term divides p_n by (n + 1) for Q and by (n + 1)(n + 2) for Q2.
-    // With a, b <= 1 the terms fall at least as 2^n / n!: the count leaves less than an ulp.
-    constexpr int terms = std::numeric_limits<R>::digits / 2 + 8;
+    // With a, b <= 2 the terms fall at least as 4^n / (n + 1)!: the count leaves less than
+    // an ulp (4^24 / 25! = 2e-11 for float, 4^38 / 39! = 4e-27 for double).
+    constexpr int terms = std::numeric_limits<R>::digits / 2 + 12;
     R previous = R(0);
     R p = R(1);
     PushResponse<R> r{R(0), R(0), R(0)};
@@ -173,7 +177,8 @@ constexpr PushResponse<R> push_response(R w0_squared, R gamma, R t) noexcept {
               (h(s) - h(f)) / two_l};
     }
   }
-  // Here a^2 >= 2 (see above): x(t) from (1, 0) and from (0, 1) in one call (x0 = (1, 0, 0), v0 = (0, 1, 0)).
+  // Here a^2 >= 2 (a > 2; or over-damped with lambda t < 1/2 and b > 2, so a > 1.9; or
+  // S >= 1, so a^2 = S F >= S (S + 1)): x(t) from (1, 0) and from (0, 1) in one call.
   const OscillatorState<R> unit = oscillate(w0_squared, gamma, Vector3<R>{R(1), R(0), R(0)},
                                             Vector3<R>{R(0), R(1), R(0)}, t);
   const R a_squared = w0_squared * t * t;
