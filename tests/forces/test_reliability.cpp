@@ -135,6 +135,17 @@ TEST_CASE_TEMPLATE("drag and buoyancy inside their ranges: no sum or product ove
   CHECK(close(drag.x, R(-0.675) * max, R(4), R(0)));
   CHECK(drag.y == R(0));
   CHECK(drag.z == R(0));
+  // ||v|| beyond the range with finite components and a subnormal k2: the force k2 ||v|| v
+  // is in it (it gave (-inf, -inf, NaN)). Expected in long double, whose range holds ||v||.
+  const R tiny = std::numeric_limits<R>::denorm_min();
+  const Vector3<R> fast = force_on(forces::Drag<R>(R(0), tiny), body_at<R>({}, {max, max, R(0)}));
+  const long double expected =
+      -static_cast<long double>(max) *
+      (static_cast<long double>(tiny) * std::sqrt(2.0L) * static_cast<long double>(max));
+  CHECK(fast.x == fast.y);
+  CHECK(std::abs(static_cast<long double>(fast.x) - expected) <=
+        8 * static_cast<long double>(std::numeric_limits<R>::epsilon()) * std::abs(expected));
+  CHECK(fast.z == R(0));
   // Inside the range the force is as before, bit for bit: v (-(k1 + k2 ||v||)).
   const Vector3<R> v{R(3), R(-4), R(0)};  // ||v|| = 5 exactly
   const Vector3<R> usual = force_on(forces::Drag<R>(R(0.5), R(0.25)), body_at<R>({}, v));

@@ -123,7 +123,14 @@ class Drag {
     if (real_isfinite(per_speed)) return v * -per_speed;
     // k1 + k2 ||v|| beyond the range: below a speed of 1 the force itself may not be, so its
     // two terms are formed apart (each, and their sum, within the range whenever it is).
-    return v * -k1_ - v * (k2_ * magnitude(v));
+    // ||v|| itself may be beyond it (finite components, a tiny k2): then k2 ||v|| is formed
+    // as (k2 s) ||v / s|| with s the largest component.
+    R k2_speed = k2_ * magnitude(v);
+    if (!real_isfinite(k2_speed)) {
+      const R s = pointmass::detail::largest_component(v);
+      k2_speed = (k2_ * s) * magnitude(v / s);
+    }
+    return v * -k1_ - v * k2_speed;
   }
 
  private:
