@@ -14,6 +14,7 @@
 #include <limits>
 
 #include "../config.hpp"
+#include "../detail/exponential.hpp"
 #include "../real.hpp"
 #include "../vector3.hpp"
 #include "bodies.hpp"
@@ -160,17 +161,9 @@ constexpr PushResponse<R> push_response(R w0_squared, R gamma, R t) noexcept {
     if (l >= R(0.5) && s < R(1)) {
       const R f = s + R(2) * l;  // fast t
       const auto g = [](R x) { return x > R(0) ? -real_expm1(-x) / x : R(1); };
-      const auto h = [](R x) {
-        if (x < R(0.5)) {  // the series of (e^(-x) - 1 + x) / x^2: sum of (-x)^k / (k + 2)!
-          R term = R(1) / R(2);
-          R sum = R(0);
-          for (int k = 0; k < std::numeric_limits<R>::digits / 2; ++k) {
-            sum += term;
-            term *= -x / static_cast<R>(k + 3);
-          }
-          return sum;
-        }
-        return ((x + real_expm1(-x)) / x) / x;
+      const auto h = [](R x) {  // below 1/2 the series, phi_2(-x): the difference cancels
+        return x < R(0.5) ? pointmass::detail::phi_series<2>(-x)
+                          : ((x + real_expm1(-x)) / x) / x;
       };
       const R two_l = R(2) * l;
       return {-real_exp(-s) * real_expm1(-two_l) / two_l, (g(s) - g(f)) / two_l,
