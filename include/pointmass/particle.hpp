@@ -210,7 +210,8 @@ class BasicParticle {
 
   // --- setters: always validated; a rejected value leaves the particle unchanged ------------
 
-  /// A finite position (for Compensated<real>, also within real's range).
+  /// A finite position (for Compensated<real>, also within real's range: at most half an ulp
+  /// beyond its largest, the midpoint included; hi is then the largest, lo the rest).
   constexpr void set_position(const Vector3<position_type>& position) {
     const auto p = raw(position);
     if constexpr (Storage::compensated) {

@@ -295,6 +295,16 @@ struct PositionStorage<Compensated<R>> {
   using element = R;
   using value = wider_real_t<R>;
   static constexpr bool compensated = true;
+  /// R's largest plus half its ulp, 2^(max_exponent - digits - 1): the midpoint between the
+  /// largest R and the next power of two, the most a pair's hi + lo reaches (element_of).
+  static constexpr value beyond_largest = [] {
+    value half_ulp = value(1);
+    for (int i = 0; i < std::numeric_limits<R>::max_exponent - std::numeric_limits<R>::digits - 1;
+         ++i) {
+      half_ulp *= value(2);
+    }
+    return static_cast<value>(std::numeric_limits<R>::max()) + half_ulp;
+  }();
 
   /// (hi, lo) + d. y = d + lo is the step's displacement with the carried error; Fast2Sum
   /// adds it to hi and leaves in lo what the new hi could not hold: exactly when hi's
@@ -308,10 +318,22 @@ struct PositionStorage<Compensated<R>> {
   POINTMASS_HD static constexpr value value_of(R hi, R lo) noexcept {
     return static_cast<value>(hi) + static_cast<value>(lo);
   }
-  /// The rounded part of a value (the error part: error_of).
-  POINTMASS_HD static constexpr R element_of(value x) noexcept { return static_cast<R>(x); }
+  /// The rounded part of a value (the error part: error_of): x rounded to R, except that a
+  /// value rounding beyond R's largest, up to the midpoint above it, keeps the largest as hi
+  /// (what is left, at most half its ulp, is an R). So every hi + lo a split or a step leaves
+  /// (the midpoint included) splits again into a finite pair: position() set back is taken.
+  /// Beyond the midpoint: infinity, which the setters refuse.
+  POINTMASS_HD static constexpr R element_of(value x) noexcept {
+    const R r = static_cast<R>(x);
+    constexpr R largest = std::numeric_limits<R>::max();
+    const value magnitude = x < value(0) ? -x : x;
+    if (magnitude > static_cast<value>(largest) && magnitude <= beyond_largest) {
+      return x < value(0) ? -largest : largest;
+    }
+    return r;
+  }
   POINTMASS_HD static constexpr R error_of(value x) noexcept {
-    return static_cast<R>(x - static_cast<value>(static_cast<R>(x)));
+    return static_cast<R>(x - static_cast<value>(element_of(x)));
   }
   /// hi + lo - origin: hi - origin = s + e exactly (TwoSum), s + lo = s2 + e2 exactly
   /// (TwoSum), and the offset is s2 + e + e2: e + e2 = t + te and s2 + t = z + ze (TwoSum

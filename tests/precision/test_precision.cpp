@@ -830,6 +830,51 @@ TEST_CASE("set_position on compensated positions: split into hi + lo, beyond flo
   CHECK(system.position(i).x == wanted);
 }
 
+TEST_CASE("set_position on compensated positions: every position() the pair gives is taken back, "
+          "up to the midpoint above the largest float") {
+  const double largest = static_cast<double>(std::numeric_limits<float>::max());  // 2^128 - 2^104
+  const double midpoint = largest + 0x1p103;  // half its ulp above
+  const double inside = midpoint - 0x1p76;  // lo = 2^103 - 2^76 rounds to 2^103
+  const double beyond = std::nextafter(midpoint, 1e300);
+  for (const double sign : {1.0, -1.0}) {
+    CAPTURE(sign);
+    pm::Particle<CompensatedPositions> particle;
+    particle.set_position({sign * inside, 0.0, 0.0});
+    CHECK(particle.stored_position().x == static_cast<float>(sign * largest));
+    CHECK(particle.stored_position_error().x == static_cast<float>(sign * 0x1p103));
+    CHECK(particle.position().x == sign * midpoint);
+    particle.set_position(particle.position());  // the midpoint itself: the same pair
+    CHECK(particle.position().x == sign * midpoint);
+    CHECK(particle.stored_position().x == static_cast<float>(sign * largest));
+    CHECK_THROWS_WITH_AS(particle.set_position({sign * beyond, 0.0, 0.0}),
+                         doctest::Contains("set_position: argument 'position'"),
+                         std::invalid_argument);
+    CHECK(particle.position().x == sign * midpoint);  // unchanged
+
+    pm::ParticleSystem<CompensatedPositions> system(2);
+    const std::size_t i = system.spawn(particle);
+    CHECK(system.position(i).x == sign * midpoint);
+    system.set_position(i, system.position(i));
+    CHECK(system.position(i).x == sign * midpoint);
+    CHECK_THROWS_AS(system.spawn({0.0, sign * beyond, 0.0}, {}), std::invalid_argument);
+    CHECK(system.size() == 1);
+  }
+  // The same edge for compensated doubles, read as long double (where it is wider): the
+  // midpoint itself, which rounds to infinity as a double, is the largest double plus 2^970.
+  if constexpr (std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits) {
+    using Pair = pm::Precision<double, pm::Compensated<double>>;
+    const long double top = static_cast<long double>(std::numeric_limits<double>::max());
+    const long double mid = top + 0x1p970L;
+    pm::Particle<Pair> particle;
+    particle.set_position({mid, 0.0L, 0.0L});
+    CHECK(particle.stored_position().x == std::numeric_limits<double>::max());
+    CHECK(particle.stored_position_error().x == 0x1p970);
+    CHECK(particle.position().x == mid);
+    CHECK_THROWS_AS(particle.set_position({std::nextafter(mid, 1e4000L), 0.0L, 0.0L}),
+                    std::invalid_argument);
+  }
+}
+
 // --- the units face ----------------------------------------------------------------------------
 
 TEST_CASE_TEMPLATE("units face: a Precision particle of SI quantities steps as the plain one", S,
