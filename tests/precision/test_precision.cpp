@@ -875,6 +875,60 @@ TEST_CASE("set_position on compensated positions: every position() the pair give
   }
 }
 
+TEST_CASE("set_position on compensated positions: taken exactly when within the midpoint above "
+          "the largest float, and position() set back gives the same value") {
+  const double largest = static_cast<double>(std::numeric_limits<float>::max());
+  const double midpoint = largest + 0x1p103;
+  std::mt19937_64 random(33);
+  std::uniform_int_distribution<int> exponent(-150, 130);
+  std::uniform_real_distribution<double> fraction(1.0, 2.0);
+  std::uniform_int_distribution<int> near_edge(-(1 << 14), 1 << 14);
+  int taken = 0;
+  int refused = 0;
+  int at_edge = 0;
+  int at_midpoint = 0;
+  for (int n = 0; n < 20000; ++n) {
+    // Half the values anywhere in float's exponents and beyond, half within 2^14 steps of
+    // 2^68 around the midpoint, where the largest float and the refusals meet: below it, a
+    // sixteenth of them have v - largest round to 2^103 as a float, so position() is the
+    // midpoint itself.
+    const double x = (n % 2 == 0)
+                         ? std::ldexp(fraction(random), exponent(random))
+                         : midpoint + static_cast<double>(near_edge(random)) * 0x1p68;
+    const double v = (n % 4 < 2) ? x : -x;
+    CAPTURE(v);
+    pm::Particle<CompensatedPositions> particle;
+    const bool within = std::fabs(v) <= midpoint;
+    if (!within) {
+      ++refused;
+      CHECK_THROWS_AS(particle.set_position({0.0, v, 0.0}), std::invalid_argument);
+      CHECK(particle.position().y == 0.0);
+      continue;
+    }
+    ++taken;
+    if (std::fabs(v) > largest) ++at_edge;
+    particle.set_position({0.0, v, 0.0});
+    const float hi = particle.stored_position().y;
+    const float lo = particle.stored_position_error().y;
+    REQUIRE(std::isfinite(hi));
+    REQUIRE(std::isfinite(lo));
+    // hi is v rounded to float (the largest where that overflows), lo what is left rounded.
+    const double expected_hi = std::fabs(v) > largest ? std::copysign(largest, v)
+                                                      : static_cast<double>(static_cast<float>(v));
+    CHECK(static_cast<double>(hi) == expected_hi);
+    CHECK(static_cast<double>(lo) == static_cast<double>(static_cast<float>(v - expected_hi)));
+    const double p = particle.position().y;
+    CHECK(p == static_cast<double>(hi) + static_cast<double>(lo));
+    if (std::fabs(p) == midpoint) ++at_midpoint;
+    particle.set_position({0.0, p, 0.0});
+    CHECK(particle.position().y == p);
+  }
+  CHECK(taken > 10000);
+  CHECK(refused > 1000);
+  CHECK(at_edge > 1000);
+  CHECK(at_midpoint > 100);
+}
+
 // --- the units face ----------------------------------------------------------------------------
 
 TEST_CASE_TEMPLATE("units face: a Precision particle of SI quantities steps as the plain one", S,
