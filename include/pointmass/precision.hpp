@@ -319,18 +319,18 @@ struct PositionStorage<Compensated<R>> {
     return static_cast<value>(hi) + static_cast<value>(lo);
   }
   /// The rounded part of a value (the error part: error_of): x rounded to R, except that a
-  /// value rounding beyond R's largest, up to the midpoint above it, keeps the largest as hi
-  /// (what is left, at most half its ulp, is an R). So every hi + lo a split or a step leaves
-  /// (the midpoint included) splits again into a finite pair: position() set back is taken.
-  /// Beyond the midpoint: infinity, which the setters refuse.
+  /// value above R's largest, up to the midpoint above it (which rounds to infinity), keeps
+  /// the largest as hi (what is left, at most half its ulp, is an R). So a pair with a finite
+  /// hi and lo within half hi's ulp, as a split leaves, gives a hi + lo (the midpoint
+  /// included) that splits again into a finite pair: position() set back is taken. Beyond
+  /// the midpoint: infinity, which the setters refuse.
   POINTMASS_HD static constexpr R element_of(value x) noexcept {
-    const R r = static_cast<R>(x);
     constexpr R largest = std::numeric_limits<R>::max();
     const value magnitude = x < value(0) ? -x : x;
     if (magnitude > static_cast<value>(largest) && magnitude <= beyond_largest) {
       return x < value(0) ? -largest : largest;
     }
-    return r;
+    return static_cast<R>(x);
   }
   POINTMASS_HD static constexpr R error_of(value x) noexcept {
     return static_cast<R>(x - static_cast<value>(element_of(x)));
