@@ -423,6 +423,5 @@ POINTMASS_HD constexpr R phi_series(R x) noexcept {
   }
 }
 
-
 }  // namespace pointmass::detail
 
