@@ -332,8 +332,11 @@ struct PositionStorage<Compensated<R>> {
     }
     return static_cast<R>(x);
   }
+  /// What x holds beyond element_of(x), rounded to R. A zero x is its own error part, so that
+  /// hi + lo keeps the sign of a zero set (-0 - -0 is +0, and -0 + +0 would read back +0).
   POINTMASS_HD static constexpr R error_of(value x) noexcept {
-    return static_cast<R>(x - static_cast<value>(element_of(x)));
+    const value rest = x - static_cast<value>(element_of(x));
+    return static_cast<R>(real_equal(x, value(0)) ? x : rest);
   }
   /// hi + lo - origin: hi - origin = s + e exactly (TwoSum), s + lo = s2 + e2 exactly
   /// (TwoSum), and the offset is s2 + e + e2: e + e2 = t + te and s2 + t = z + ze (TwoSum

@@ -363,6 +363,39 @@ TEST_CASE("double positions: a step of zero displacement keeps the sign of zero,
   CHECK(system_matches(system, 0, wide));
 }
 
+// A compensated position set to -0 splits into hi = -0 and lo = -0: hi + lo reads back -0, a set
+// position() keeps it, and a step that moves nothing leaves it at -0, as all-float's does.
+TEST_CASE("compensated positions: a zero set keeps its sign, set back and after a step of zero "
+          "displacement") {
+  const Vector3<float> minus_zero{-0.0f, -0.0f, -0.0f};
+  pm::Particle<float> plain;
+  plain.set_position(minus_zero);
+  plain.set_velocity(minus_zero);
+  pm::Particle<CompensatedPositions> wide;
+  wide.set_position({-0.0, 0.0, -0.0});
+  CHECK(std::signbit(wide.position().x));
+  CHECK(!std::signbit(wide.position().y));
+  CHECK(std::signbit(wide.stored_position_error().x));
+  wide.set_position(wide.position());
+  CHECK(std::signbit(wide.position().x));
+  wide.set_position({-0.0, -0.0, -0.0});
+  wide.set_velocity(minus_zero);
+  pm::ParticleSystem<CompensatedPositions> system(1);
+  system.spawn({-0.0, -0.0, -0.0}, minus_zero);
+  CHECK(std::signbit(system.position(0).z));
+  system.set_position(0, system.position(0));
+  CHECK(std::signbit(system.position(0).z));
+  plain.integrate(1.0f / 60);
+  wide.integrate(1.0f / 60);
+  system.step(1.0f / 60);
+  REQUIRE(std::signbit(plain.position().x));  // what all-float does
+  CHECK(std::signbit(wide.position().x));
+  CHECK(std::signbit(wide.position().y));
+  CHECK(std::signbit(wide.position().z));
+  CHECK(std::signbit(system.position(0).x));
+  CHECK(system_matches(system, 0, wide));
+}
+
 // --- render-relative positions --------------------------------------------------------------
 
 TEST_CASE("render-relative: double positions, exact wherever the true offset is a float") {
