@@ -341,50 +341,19 @@ TEST_CASE("Fast2Sum: exact where hi's exponent is at least y's, within an ulp of
 
 // The displacement is the policy's p0 + x from p0 = -0, which is x to the last bit: a step that
 // moves nothing leaves a position of -0 at -0, as all-float's p0 + v0 t does (from p0 = +0 the
-// displacement of a velocity of -0 would come out +0, and -0 + +0 is +0).
-TEST_CASE("double positions: a step of zero displacement keeps the sign of zero, as all-float's") {
+// displacement of a velocity of -0 would come out +0, and -0 + +0 is +0). A compensated -0 is
+// hi = -0 and lo = -0 (with lo = +0, hi + lo would read +0).
+TEST_CASE_TEMPLATE("wide positions: a step of zero displacement keeps the sign of zero, as "
+                   "all-float's", S, DoublePositions, CompensatedPositions) {
   const Vector3<float> minus_zero{-0.0f, -0.0f, -0.0f};
   pm::Particle<float> plain;
   plain.set_position(minus_zero);
   plain.set_velocity(minus_zero);
-  pm::Particle<DoublePositions> wide;
+  pm::Particle<S> wide;
   wide.set_position({-0.0, -0.0, -0.0});
   wide.set_velocity(minus_zero);
-  pm::ParticleSystem<DoublePositions> system(1);
+  pm::ParticleSystem<S> system(1);
   system.spawn({-0.0, -0.0, -0.0}, minus_zero);
-  plain.integrate(1.0f / 60);
-  wide.integrate(1.0f / 60);
-  system.step(1.0f / 60);
-  REQUIRE(std::signbit(plain.position().x));  // what all-float does
-  CHECK(std::signbit(wide.position().x));
-  CHECK(std::signbit(wide.position().y));
-  CHECK(std::signbit(wide.position().z));
-  CHECK(std::signbit(system.position_x()[0]));
-  CHECK(system_matches(system, 0, wide));
-}
-
-// A compensated position set to -0 splits into hi = -0 and lo = -0: hi + lo reads back -0, a set
-// position() keeps it, and a step that moves nothing leaves it at -0, as all-float's does.
-TEST_CASE("compensated positions: a zero set keeps its sign, set back and after a step of zero "
-          "displacement") {
-  const Vector3<float> minus_zero{-0.0f, -0.0f, -0.0f};
-  pm::Particle<float> plain;
-  plain.set_position(minus_zero);
-  plain.set_velocity(minus_zero);
-  pm::Particle<CompensatedPositions> wide;
-  wide.set_position({-0.0, 0.0, -0.0});
-  CHECK(std::signbit(wide.position().x));
-  CHECK(!std::signbit(wide.position().y));
-  CHECK(std::signbit(wide.stored_position_error().x));
-  wide.set_position(wide.position());
-  CHECK(std::signbit(wide.position().x));
-  wide.set_position({-0.0, -0.0, -0.0});
-  wide.set_velocity(minus_zero);
-  pm::ParticleSystem<CompensatedPositions> system(1);
-  system.spawn({-0.0, -0.0, -0.0}, minus_zero);
-  CHECK(std::signbit(system.position(0).z));
-  system.set_position(0, system.position(0));
-  CHECK(std::signbit(system.position(0).z));
   plain.integrate(1.0f / 60);
   wide.integrate(1.0f / 60);
   system.step(1.0f / 60);
@@ -394,6 +363,24 @@ TEST_CASE("compensated positions: a zero set keeps its sign, set back and after 
   CHECK(std::signbit(wide.position().z));
   CHECK(std::signbit(system.position(0).x));
   CHECK(system_matches(system, 0, wide));
+}
+
+TEST_CASE("compensated positions: a zero set keeps its sign, and so does position() set back") {
+  pm::Particle<CompensatedPositions> particle;
+  particle.set_position({-0.0, 0.0, -0.0});
+  CHECK(std::signbit(particle.position().x));
+  CHECK(!std::signbit(particle.position().y));
+  CHECK(std::signbit(particle.stored_position_error().x));
+  particle.set_position(particle.position());
+  CHECK(std::signbit(particle.position().x));
+  CHECK(!std::signbit(particle.position().y));
+  pm::ParticleSystem<CompensatedPositions> system(1);
+  system.spawn({1.0, 2.0, -0.0}, {});
+  CHECK(std::signbit(system.position(0).z));
+  system.set_position(0, system.position(0));
+  CHECK(std::signbit(system.position(0).z));
+  system.set_position(0, particle.position());
+  CHECK(system_matches(system, 0, particle));
 }
 
 // --- render-relative positions --------------------------------------------------------------
