@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 // Fuzz target: drives Particle (every damping x position pair), ParticleSystem (eleven feature
-// sets and policy pairs: operation sequences checked against a reference model, see
-// "ParticleSystem" below) and the force generators, float and double, through the public
-// API with arbitrary bytes.
+// sets and policy pairs, and five with positions stored wider than the arithmetic: operation
+// sequences checked against a reference model, see "ParticleSystem" below) and the force
+// generators, float and double, through the public API with arbitrary bytes.
 //
 // The first byte chooses the configuration; the rest is a program of operations (setters,
 // forces, steps, spawns, kills...) whose arguments are read from the input as raw bit
@@ -31,7 +31,8 @@
 //     the true offset is a float, and nothing written past size() or when refused.
 //
 // Inputs starting with a byte >= 0xF0 drive the force generators instead (see "force
-// generators" below).
+// generators" below); a first byte in [0xE0, 0xF0) drives systems whose positions are stored
+// wider than their arithmetic, double or compensated (see "positions stored wider" below).
 //
 // A failed check prints what failed and calls abort(), which libFuzzer reports as a crash
 // with the input that caused it. Built with POINTMASS_ENABLE_CHECKS, so the hot-path
@@ -162,22 +163,24 @@ class Input {
 // --- comparisons ----------------------------------------------------------------------------
 
 template <class R>
-bool same(R a, R b) {  // same bits, or both zero, or both NaN
-  if (a != a && b != b) return true;
-  if (a == R(0) && b == R(0)) return true;
-  return std::memcmp(&a, &b, sizeof a) == 0;
-}
-template <class R>
-bool same(const Vector3<R>& a, const Vector3<R>& b) {
-  return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z);
-}
-template <class R>
 bool identical(R a, R b) {  // same bits exactly (or both NaN)
-  return (a != a && b != b) || std::memcmp(&a, &b, sizeof a) == 0;
+  if constexpr (std::is_same_v<R, long double>) {  // x87's 80 bits: padding is no part of it
+    return (a != a && b != b) || (a == b && std::signbit(a) == std::signbit(b));
+  } else {
+    return (a != a && b != b) || std::memcmp(&a, &b, sizeof a) == 0;
+  }
+}
+template <class R>
+bool same(R a, R b) {  // same bits, or both zero, or both NaN
+  return (a == R(0) && b == R(0)) || identical(a, b);
 }
 template <class R>
 bool identical(const Vector3<R>& a, const Vector3<R>& b) {
   return identical(a.x, b.x) && identical(a.y, b.y) && identical(a.z, b.z);
+}
+template <class R>
+bool same(const Vector3<R>& a, const Vector3<R>& b) {
+  return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z);
 }
 
 template <class T>
@@ -238,8 +241,8 @@ struct Budget {
     if (!(static_cast<double>(x < R(0) ? -x : x) <= limit)) finite_physics = false;
   }
   template <class R>
-  void vector(const Vector3<R>& v) {
-    value(v.x), value(v.y), value(v.z);
+  void vector(const Vector3<R>& v, double limit = bound) {
+    value(v.x, limit), value(v.y, limit), value(v.z, limit);
   }
   void step(int count, double t) {
     steps += count;
@@ -424,6 +427,144 @@ void fuzz_particle(Input& in) {
 constexpr std::size_t max_particles = 1400;  // enough for step to alternate its walk
 constexpr std::size_t reserve_limit = 4096;
 
+// --- positions stored wider than the arithmetic (precision.hpp) -----------------------------
+//
+// The same operations drive systems whose positions are stored wider than R: a wider Real
+// (Precision<float, double>) or Compensated<R> (hi + lo, two R). Positions then come from
+// wide_number, which adds far positions with bits below R's precision and the edge of the
+// storage's range, and the finite-physics bound for positions is wide_position_bound: from
+// |p| <= 1e30 the displacements (< 1e18, as above) keep hi, lo and p finite in float. The
+// position's own contract (docs/large-worlds.md, docs/numerics.md "Contracts"):
+//
+//   * accepted exactly when finite and, for Compensated<R>, no farther from 0 than the
+//     midpoint between R's largest value and the next power of two (the most hi + lo
+//     reaches); a refused one is reported naming the function and 'position', and changes
+//     nothing, in the system and in a Particle;
+//   * stored as documented: a wider Real keeps the value; Compensated<R> keeps hi = the value
+//     rounded to R (R's largest, beyond it up to the midpoint) and lo = the rest rounded to R;
+//   * every position() is taken back, by the system and by a Particle, and gives the same
+//     position() again; spawn(particle) takes the particle's pair, lo included.
+
+constexpr double wide_position_bound = 1e30;
+
+template <class System>
+inline constexpr bool plain_positions =
+    std::is_same_v<typename System::position_value, typename System::real>;
+template <class System>
+inline constexpr bool compensated_positions = !std::is_same_v<
+    typename System::position_element, typename System::position_value>;
+
+/// R's largest value and the midpoint above it (between it and the next power of two), in W.
+template <class W, class R>
+W largest_of() {
+  return static_cast<W>(std::numeric_limits<R>::max());
+}
+template <class W, class R>
+W midpoint_above_largest() {
+  const R largest = std::numeric_limits<R>::max();
+  const W ulp = static_cast<W>(largest) - static_cast<W>(std::nextafter(largest, R(0)));
+  return static_cast<W>(largest) + ulp / W(2);
+}
+
+/// A position component of W for arithmetic R: what number<R> gives, a double's raw bits and
+/// special values, far positions with bits below R's precision, and the edge of R's range.
+template <class W, class R>
+W wide_number(Input& in) {
+  using Near = std::conditional_t<sizeof(W) <= sizeof(double), W, double>;  // number<>'s types
+  const W largest = largest_of<W, R>();
+  const W midpoint = midpoint_above_largest<W, R>();
+  const W half_ulp = midpoint - largest;
+  const W sign = in.byte() % 2 == 0 ? W(1) : W(-1);
+  switch (in.byte() % 6) {
+    case 0: return static_cast<W>(in.number<R>());
+    case 1: return static_cast<W>(in.number<Near>());
+    case 2:
+    case 3: {  // 1 to 2^128 m, with 48 significant bits
+      const W fraction = W(1) + static_cast<W>(in.word()) / W(65536) +
+                         static_cast<W>(in.word()) / W(65536) / W(65536) / W(65536);
+      return sign * std::ldexp(fraction, in.byte() % 129);
+    }
+    case 4: {
+      const W edge[] = {largest,
+                        midpoint,
+                        std::nextafter(midpoint, W(0)),
+                        std::nextafter(midpoint, std::numeric_limits<W>::infinity()),
+                        largest + half_ulp / W(2),
+                        midpoint + half_ulp,
+                        std::numeric_limits<W>::max(),
+                        std::numeric_limits<W>::infinity()};
+      return sign * edge[in.byte() % 8];
+    }
+    default:  // between R's largest and the midpoint, as a pair's hi + lo may be
+      return sign * (largest + half_ulp * static_cast<W>(in.word()) / W(65535));
+  }
+}
+
+/// A position for System: R's numbers where positions are stored as R (the inputs of the
+/// corpus read as before), wide_number's where they are stored wider.
+template <class System>
+Vector3<typename System::position_value> position_vector(Input& in) {
+  using R = typename System::real;
+  using W = typename System::position_value;
+  if constexpr (plain_positions<System>) {
+    return in.vector<R>();
+  } else {
+    const W x = wide_number<W, R>(in);
+    const W y = wide_number<W, R>(in);
+    const W z = wide_number<W, R>(in);
+    return {x, y, z};
+  }
+}
+
+template <class System>
+constexpr double position_bound = plain_positions<System> ? bound : wide_position_bound;
+
+/// The setters' rule for a position (see above).
+template <class System>
+bool position_accepted(const Vector3<typename System::position_value>& p) {
+  using W = typename System::position_value;
+  if (!finite(p)) return false;
+  if constexpr (compensated_positions<System>) {
+    const W midpoint = midpoint_above_largest<W, typename System::real>();
+    const auto within = [&](W x) { return (x < W(0) ? -x : x) <= midpoint; };
+    return within(p.x) && within(p.y) && within(p.z);
+  }
+  return true;
+}
+
+/// hi and lo of a Compensated<R> position set to x.
+template <class R, class W>
+R expected_hi(W x) {
+  const R largest = std::numeric_limits<R>::max();
+  if (x > largest_of<W, R>()) return largest;
+  if (x < -largest_of<W, R>()) return -largest;
+  return static_cast<R>(x);
+}
+template <class R, class W>
+R expected_lo(W x) {
+  if (x == W(0)) return static_cast<R>(x);  // a zero is both parts: hi + lo keeps its sign
+  return static_cast<R>(x - static_cast<W>(expected_hi<R>(x)));
+}
+
+/// Particle i of `system` stores the accepted position p as documented (see above).
+template <class System>
+void check_stored_position(const System& system, std::size_t i,
+                           const Vector3<typename System::position_value>& p) {
+  using R = typename System::real;
+  const auto& a = system.arrays();
+  if constexpr (compensated_positions<System>) {
+    const Vector3<R> hi{expected_hi<R>(p.x), expected_hi<R>(p.y), expected_hi<R>(p.z)};
+    const Vector3<R> lo{expected_lo<R>(p.x), expected_lo<R>(p.y), expected_lo<R>(p.z)};
+    require(identical(Vector3<R>{a.position_x[i], a.position_y[i], a.position_z[i]}, hi),
+            "a compensated position's hi is not the position rounded");
+    require(identical(Vector3<R>{a.position_error_x[i], a.position_error_y[i],
+                                 a.position_error_z[i]},
+                      lo),
+            "a compensated position's lo is not the rest rounded");
+  } else {
+    require(identical(system.position(i), p), "a position was not stored as given");
+  }
+}
 template <class System>
 class Mirror {
  public:
@@ -444,7 +585,8 @@ class Mirror {
     ages.push_back(R(0));
     lifetimes.push_back(std::numeric_limits<R>::infinity());
   }
-  void spawn(const Vector3<R>& p, const Vector3<R>& v) {
+  template <class Position>
+  void spawn(const Vector3<Position>& p, const Vector3<R>& v) {
     Body body;
     body.set_position(p);
     body.set_velocity(v);
@@ -511,11 +653,25 @@ void compare(const System& system, const Mirror<System>& mirror, const Budget& b
   const auto agree = [exact](const auto& a, const auto& b) { return exact ? identical(a, b) : same(a, b); };
   for (std::size_t i = 0; i < system.size(); ++i) {
     const auto& body = mirror.bodies[i];
-    const Vector3<typename System::real> p = system.position(i);
+    const auto p = system.position(i);
     require(agree(p, body.position()), "system position differs from Particle");
     require(agree(system.velocity(i), body.velocity()), "system velocity differs from Particle");
-    require(identical(system.position_x()[i], p.x) && identical(system.velocity_y()[i], system.velocity(i).y),
-            "a span differs from the accessor");
+    require(identical(system.velocity_y()[i], system.velocity(i).y), "a span differs from the accessor");
+    if constexpr (plain_positions<System>) {
+      require(identical(system.position_x()[i], p.x), "a span differs from the accessor");
+    } else {  // the stored numbers too: the pair's hi and lo, or the wide value
+      const auto& a = system.arrays();
+      const auto stored = body.stored_position();
+      require(agree(a.position_x[i], stored.x) && agree(a.position_y[i], stored.y) &&
+                  agree(a.position_z[i], stored.z) && identical(system.position_x()[i], a.position_x[i]),
+              "a system's stored position differs from Particle");
+      if constexpr (compensated_positions<System>) {
+        const auto error = body.stored_position_error();
+        require(agree(a.position_error_x[i], error.x) && agree(a.position_error_y[i], error.y) &&
+                    agree(a.position_error_z[i], error.z),
+                "a system's position error differs from Particle");
+      }
+    }
     require(identical(system.acceleration(i), body.acceleration()), "acceleration differs");
     if constexpr (System::has_forces) {
       require(identical(system.force_accumulator(i), body.force_accumulator()), "force differs");
@@ -587,11 +743,12 @@ std::size_t pick_count(Input& in) {
 
 /// A decision about a particle that depends on its state only (zeros and NaNs canonical, so
 /// the system and the mirror decide alike), for kill_if.
-template <class R>
-bool doomed(const Vector3<R>& p, const Vector3<R>& v, std::uint8_t mode) {
+template <class W, class R>
+bool doomed(const Vector3<W>& p, const Vector3<R>& v, std::uint8_t mode) {
   if (mode % 8 == 7) return true;
   std::uint64_t hash = 1469598103934665603u ^ mode;
-  for (R x : {p.x, p.y, p.z, v.x, v.y, v.z}) {
+  // A wide position decides by its value rounded to R (the same in the system and a mirror).
+  for (R x : {static_cast<R>(p.x), static_cast<R>(p.y), static_cast<R>(p.z), v.x, v.y, v.z}) {
     if (x == R(0)) x = R(0);
     if (x != x) x = std::numeric_limits<R>::quiet_NaN();
     std::conditional_t<sizeof(R) == 4, std::uint32_t, std::uint64_t> bits;
@@ -605,14 +762,32 @@ bool doomed(const Vector3<R>& p, const Vector3<R>& v, std::uint8_t mode) {
 }
 
 // Exact in long double: is p - origin's exact value a float? Then every road must return it.
-template <class R>
-bool exact_float_offset(R p, R origin, float& offset) {
-  const long double a = static_cast<long double>(p), b = -static_cast<long double>(origin);
+bool exact_float_offset(long double p, long double origin, float& offset) {
+  const long double a = p, b = -origin;
   const long double s = a + b;
   const long double bb = s - a;
   if ((a - (s - bb)) + (b - bb) != 0.0L) return false;  // s is not the exact difference
   offset = static_cast<float>(s);
   return static_cast<long double>(offset) == s;
+}
+
+// Component k of particle i's stored position, exactly, when long double holds it (a
+// compensated pair's hi + lo may need more digits).
+template <class System>
+bool exact_position(const System& system, std::size_t i, int k, long double& value) {
+  using E = typename System::position_element;
+  const auto& a = system.arrays();
+  const E* const stored[3] = {a.position_x, a.position_y, a.position_z};
+  const long double hi = static_cast<long double>(stored[k][i]);
+  value = hi;
+  if constexpr (compensated_positions<System>) {
+    const E* const errors[3] = {a.position_error_x, a.position_error_y, a.position_error_z};
+    const long double lo = static_cast<long double>(errors[k][i]);
+    value = hi + lo;
+    const long double back = value - hi;
+    return (hi - (value - back)) + (lo - back) == 0.0L;  // TwoSum: no error, value is exact
+  }
+  return true;
 }
 
 // positions_relative_to with any origin (non-finite ones included; or one near a particle,
@@ -621,11 +796,11 @@ bool exact_float_offset(R p, R origin, float& offset) {
 // nothing written past size().
 template <class System, class M>
 void check_positions_relative_to(const System& system, const M& mirror, Input& in) {
-  using R = typename System::real;
+  using W = typename System::position_value;
   const std::uint8_t mode = in.byte();
-  Vector3<R> origin = in.vector<R>();
+  Vector3<W> origin = position_vector<System>(in);
   if (mode % 2 == 1 && system.size() != 0) {  // a camera near particle j: the offset read
-    const Vector3<R> p = system.position(std::size_t{mode} / 2 % system.size());
+    const Vector3<W> p = system.position(std::size_t{mode} / 2 % system.size());
     origin = {p.x - origin.x, p.y - origin.y, p.z - origin.z};
   }
   const std::size_t length = in.byte() % 64;
@@ -645,13 +820,13 @@ void check_positions_relative_to(const System& system, const M& mirror, Input& i
             "batch offset differs from the system's single one");
     require(identical(buffer[i], mirror.bodies[i].position_relative_to(origin)),
             "batch offset differs from the particle's");
-    const Vector3<R> p = system.position(i);
-    const R ps[3] = {p.x, p.y, p.z};
-    const R os[3] = {origin.x, origin.y, origin.z};
+    const W os[3] = {origin.x, origin.y, origin.z};
     const float got[3] = {buffer[i].x, buffer[i].y, buffer[i].z};
     for (int k = 0; k < 3; ++k) {
       float exact = 0.0f;
-      if (exact_float_offset(ps[k], os[k], exact)) {
+      long double p = 0.0L;
+      if (exact_position(system, i, k, p) &&
+          exact_float_offset(p, static_cast<long double>(os[k]), exact)) {
         require(same(got[k], exact), "an offset that is a float came out inexact");
       }
     }
@@ -679,11 +854,11 @@ void fuzz_system(Input& in) {
     switch (code % 23) {
       case 0:
       case 1: {
-        const auto p = in.vector<R>();
+        const auto p = position_vector<System>(in);
         const auto v = in.vector<R>();
         if (system.size() >= max_particles) break;
         const std::size_t i = system.spawn(p, v);
-        if (!finite(p)) {
+        if (!position_accepted<System>(p)) {
           expect_rejected("spawn", "position", p);
           require(i == System::npos, "rejected spawn returned an index");
         } else if (!finite(v)) {
@@ -692,8 +867,9 @@ void fuzz_system(Input& in) {
         } else {
           expect_accepted("spawn");
           require(i == mirror.size(), "spawn index");
+          check_stored_position(system, i, p);
           mirror.spawn(p, v);
-          budget.vector(p);
+          budget.vector(p, position_bound<System>);
           budget.vector(v);
         }
         break;
@@ -705,11 +881,32 @@ void fuzz_system(Input& in) {
         break;
       }
       case 3: {
-        const auto p = in.vector<R>();
+        const auto p = position_vector<System>(in);
         system.set_position(index, p);
-        if (!valid_index) expect_rejected("set_position", "index", index);
-        else if (!finite(p)) expect_rejected("set_position", "position", p);
-        else mirror.bodies[index].set_position(p), budget.vector(p);
+        if (!valid_index) {
+          expect_rejected("set_position", "index", index);
+        } else if (!position_accepted<System>(p)) {
+          expect_rejected("set_position", "position", p);
+          auto body = mirror.bodies[index];  // a Particle refuses it too, and keeps its state
+          body.set_position(p);
+          expect_rejected("set_position", "position", p);
+          require(same_state(body, mirror.bodies[index]), "a refused position changed a Particle");
+        } else {
+          check_stored_position(system, index, p);
+          mirror.bodies[index].set_position(p);
+          budget.vector(p, position_bound<System>);
+          if constexpr (!plain_positions<System>) {  // every position() is taken back
+            const auto q = system.position(index);
+            system.set_position(index, q);
+            expect_accepted("set_position(i, position(i))");
+            require(identical(system.position(index), q), "set_position(i, position(i)) moved it");
+            auto& body = mirror.bodies[index];
+            const auto r = body.position();
+            body.set_position(r);
+            expect_accepted("Particle::set_position(position())");
+            require(identical(body.position(), r), "set_position(position()) moved a Particle");
+          }
+        }
         break;
       }
       case 4: {
@@ -863,12 +1060,16 @@ void fuzz_system(Input& in) {
           for (const float x : buffer) require(x == 7.0f, "a refused copy-out wrote");
         } else {
           expect_accepted("copy_positions");
+          // Each stored position rounded once to float (a compensated pair: hi + lo, where
+          // long double holds it exactly).
           for (std::size_t i = 0; i < n; ++i) {
-            const auto p = system.position(i);
-            const float expected[3] = {static_cast<float>(p.x), static_cast<float>(p.y),
-                                       static_cast<float>(p.z)};
-            require(std::memcmp(&buffer[i * stride], expected, sizeof expected) == 0,
-                    "copy-out differs from the positions");
+            for (int k = 0; k < 3; ++k) {
+              long double p = 0.0L;
+              if (exact_position(system, i, k, p)) {
+                require(identical(buffer[i * stride + static_cast<std::size_t>(k)], static_cast<float>(p)),
+                        "copy-out differs from the positions");
+              }
+            }
           }
         }
         break;
@@ -968,9 +1169,10 @@ void fuzz_system(Input& in) {
         // The moved-from system can be cleared, used and assigned to.
         system.clear();
         require(system.size() == 0, "clear left particles");
-        require(system.spawn(Vector3<R>{R(1), R(2), R(3)}, Vector3<R>{}) == 0,
+        using W = typename System::position_value;
+        require(system.spawn(Vector3<W>{W(1), W(2), W(3)}, Vector3<R>{}) == 0,
                 "a moved-from system does not spawn at 0");
-        require(identical(system.position(0), Vector3<R>{R(1), R(2), R(3)}),
+        require(identical(system.position(0), Vector3<W>{W(1), W(2), W(3)}),
                 "a moved-from system lost a new particle");
         system = std::move(moved);
         require(system.capacity() == capacity && system.next_step_backward() == backward,
@@ -1066,11 +1268,14 @@ void fuzz_system(Input& in) {
         if (mirror.size() == 0) break;
         for (std::size_t k = 0; k < count && system.size() < max_particles; ++k) {
           auto body = mirror.bodies[(index + k) % mirror.size()];
-          const Vector3<R> p = body.position();
-          const Vector3<R> shifted{p.x + static_cast<R>(k), p.y, p.z};  // copies that differ
-          if (finite(shifted)) {
+          using W = typename System::position_value;
+          const Vector3<W> p = body.position();
+          // Copies that differ; a wide position is moved only every other time, so that the
+          // copies of its own pairs (lo included) are spawned too.
+          const Vector3<W> shifted{p.x + static_cast<W>(k), p.y, p.z};
+          if (position_accepted<System>(shifted) && (plain_positions<System> || k % 2 == 1)) {
             body.set_position(shifted);
-            budget.vector(shifted);
+            budget.vector(shifted, position_bound<System>);
           }
           const std::size_t i = system.spawn(body);
           if (!finite(body.position())) {  // a particle stepped beyond the range of R
@@ -1459,11 +1664,27 @@ using Configs = decltype(concatenate(
     concatenate(
         concatenate(std::declval<MoreSystemConfigs<float>>(), std::declval<MoreSystemConfigs<double>>()),
         concatenate(std::declval<GameSystemConfigs<float>>(), std::declval<GameSystemConfigs<double>>()))));
-static_assert(std::tuple_size_v<Configs> < 0xF0, "the first bytes from 0xF0 choose the forces");
+static_assert(std::tuple_size_v<Configs> <= 0xE0,
+              "the first bytes from 0xE0 choose wide positions and the forces");
 
-template <std::size_t... I>
+// Positions stored wider than the arithmetic ("positions stored wider" above), chosen by a
+// first byte in [0xE0, 0xF0), which no input of the corpus before them starts with: so those
+// inputs keep their configuration.
+using WideConfigs = std::tuple<
+    SystemConfig<ParticleSystem<Precision<float, double>>>,
+    SystemConfig<ParticleSystem<Precision<float, Compensated<float>>, damping::Exact, position::Exact,
+                                 features::PerParticleDamping, features::PerParticleAcceleration,
+                                 features::ForceAccumulator, features::Lifetime>>,
+    SystemConfig<ParticleSystem<Precision<float, Compensated<float>>, damping::AccelerateThenDamp,
+                                 position::SemiImplicit, features::ForceAccumulator>>,
+    SystemConfig<ParticleSystem<Precision<double, Compensated<double>>, damping::PerFrame,
+                                 position::Kinematic, features::PerParticleDamping, features::Lifetime>>,
+    SystemConfig<ParticleSystem<Precision<float, double>, damping::PerSecond, position::SemiImplicit,
+                                 features::Lifetime, features::Interpolation, features::Handles>>>;
+
+template <class Tuple, std::size_t... I>
 void dispatch(std::size_t which, Input& in, std::index_sequence<I...>) {
-  ((which == I ? (std::tuple_element_t<I, Configs>::run(in), 0) : 0), ...);
+  ((which == I ? (std::tuple_element_t<I, Tuple>::run(in), 0) : 0), ...);
 }
 
 }  // namespace
@@ -1479,7 +1700,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     else fuzz_forces<double>(in);
     return 0;
   }
+  if (first >= 0xE0) {  // positions stored wider than the arithmetic
+    constexpr std::size_t count = std::tuple_size_v<WideConfigs>;
+    dispatch<WideConfigs>((first - 0xE0u) % count, in, std::make_index_sequence<count>{});
+    return 0;
+  }
   constexpr std::size_t count = std::tuple_size_v<Configs>;
-  dispatch(first % count, in, std::make_index_sequence<count>{});
+  dispatch<Configs>(first % count, in, std::make_index_sequence<count>{});
   return 0;
 }
