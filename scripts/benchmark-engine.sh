@@ -18,7 +18,7 @@ trap 'rm -f "$json"' EXIT
 run_repetitions "$json" "$build/benchmarks/engine_step" "$repetitions" 0.05
 tables="$build/engine-tables.md"
 median_table "$json" "$repetitions" >"$tables" <<'PY'
-print(f"Command: `scripts/benchmark-engine.sh {sys.argv[2]}`. Machine: {ctx.get('num_cpus')} CPUs "
+print(f"Command: `scripts/benchmark-engine.sh {sys.argv[2]}`. Machine: {processor}, {ctx.get('num_cpus')} CPUs "
       f"at {ctx.get('mhz_per_cpu')} MHz, one thread; -O3 -march=native; medians of "
       f"{sys.argv[2]} interleaved repetitions. Each cell: M particle-steps/s, and in brackets "
       f"the ratio to the reference engine's loop at the same size and step kind.\n")

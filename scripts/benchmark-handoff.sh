@@ -17,7 +17,7 @@ run_repetitions "$json" "$build/benchmarks/system_step" "$repetitions" 0.05 \
   --benchmark_filter='BM_System<(Sparks|Interpolated|GameSparks)<float>>/(100000|1000000)$|BM_Copy|BM_Relative'
 table="$build/handoff.md"
 median_table "$json" "$repetitions" >"$table" <<'PY'
-print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; medians of "
+print(f"Machine: {processor}, {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; medians of "
       f"{sys.argv[2]} interleaved repetitions (`scripts/benchmark-handoff.sh {sys.argv[2]}`), "
       "float, M particles/s; time / step: the row's time over the lean step's, same size.\n")
 print("| what | 100,000 | time / step | 1,000,000 | time / step |\n|---|---|---|---|---|")

@@ -18,7 +18,7 @@ run_repetitions "$json" "$build/benchmarks/kokkos_step" "$repetitions" 0.5 \
   --benchmark_filter=/10000000/
 tables="$build/tables.md"
 median_table "$json" "$repetitions" >"$tables" <<'PY'
-print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; medians of "
+print(f"Machine: {processor}, {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; medians of "
       f"{sys.argv[2]} interleaved repetitions (`scripts/benchmark-kokkos.sh {sys.argv[2]}`), "
       "M particle-steps/s at 10,000,000 particles, `ParticleSystem<R>` (uniform per-second "
       "damping and gravity).\n")

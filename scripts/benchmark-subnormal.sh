@@ -19,15 +19,7 @@ run_repetitions "$json" "$build/benchmarks/system_step" "$repetitions" 0.05 \
   --benchmark_filter='BM_System<Sparks<(float|double)>>/(1000|100000)$|BM_Subnormal'
 table="$build/subnormal.md"
 median_table "$json" "$repetitions" >"$table" <<'PY'
-model = ""
-try:
-    for line in open("/proc/cpuinfo"):
-        if line.startswith("model name"):
-            model = line.split(":", 1)[1].strip()
-            break
-except OSError:
-    pass
-print(f"Machine: {model or 'unknown processor'}, {ctx.get('num_cpus')} CPUs at "
+print(f"Machine: {processor}, {ctx.get('num_cpus')} CPUs at "
       f"{ctx.get('mhz_per_cpu')} MHz; medians of {sys.argv[2]} interleaved repetitions "
       f"(`scripts/benchmark-subnormal.sh {sys.argv[2]}`); `ParticleSystem<R>::step` (the "
       "sparks: per-second damping 0.9, gravity), M particle-steps/s; time / normal: the row's "

@@ -18,7 +18,7 @@ trap 'rm -f "$json"' EXIT
 run_repetitions "$json" "$build/benchmarks/system_step" "$repetitions" 0.05
 tables="$build/tables.md"
 median_table "$json" "$repetitions" >"$tables" <<'PY'
-print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; "
+print(f"Machine: {processor}, {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; "
       f"{ctx.get('library_build_type', '')} Google Benchmark; medians of "
       f"{sys.argv[2]} interleaved repetitions (`scripts/benchmark-system.sh {sys.argv[2]}`), "
       "M particle-steps/s.\n")

@@ -75,16 +75,26 @@ run_repetitions() {
     --benchmark_report_aggregates_only=true --benchmark_format=json >"$json"
 }
 
+# processor_name: the processor's model, as /proc/cpuinfo names it (for the tables' Machine
+# line), or "unknown processor".
+processor_name() {
+  local name
+  name=$(sed -n '/^model name/{s/^[^:]*:[[:space:]]*//p;q;}' /proc/cpuinfo 2>/dev/null || true)
+  echo "${name:-unknown processor}"
+}
+
 # median_table JSON REPETITIONS [MORE...] <<'PY' ... PY: runs the Python script on standard
 # input with sys.argv[1:] = JSON REPETITIONS [MORE...] and, defined before it, `data` (the
-# JSON report), `ctx` (its context) and `rate` (run name -> median items_per_second, in
-# millions). Then noisy_note's sentence, if any, under the tables.
+# JSON report), `ctx` (its context), `rate` (run name -> median items_per_second, in
+# millions) and `processor` (processor_name). Then noisy_note's sentence, if any, under the
+# tables.
 median_table() {
-  python3 - "$@" <<<"import json, os, sys
+  POINTMASS_PROCESSOR=$(processor_name) python3 - "$@" <<<"import json, os, sys
 data = json.load(open(sys.argv[1]))
 rate = {b['run_name']: b['items_per_second'] / 1e6
         for b in data['benchmarks'] if b.get('aggregate_name') == 'median'}
 ctx = data['context']
+processor = os.environ['POINTMASS_PROCESSOR']
 $(cat)"
   local note
   note=$(noisy_note "$1" items_per_second)

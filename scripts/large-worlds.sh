@@ -25,7 +25,7 @@ trap 'rm -f "$json"' EXIT
 run_repetitions "$json" "$build/benchmarks/large_worlds_step" "$repetitions" 0.05
 cost="$build/cost.md"
 median_table "$json" "$repetitions" >"$cost" <<'PY'
-print(f"Machine: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; medians of "
+print(f"Machine: {processor}, {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; medians of "
       f"{sys.argv[2]} interleaved repetitions (`scripts/large-worlds.sh {sys.argv[2]}`); "
       "`ParticleSystem::step`, M particle-steps/s, and the cost against all-float in the same "
       "run (time per step / all-float's). The rows \"by hand\" are the sparks' arithmetic "

@@ -185,11 +185,12 @@ for scene in ballistic spring far; do
 done
 
 echo "== tables into $doc"
-python3 - "$build" "$doc" "$repetitions" <<'PY'
-import csv, json, sys
+POINTMASS_PROCESSOR=$(processor_name) python3 - "$build" "$doc" "$repetitions" <<'PY'
+import csv, json, os, sys
 build, doc, repetitions = sys.argv[1], sys.argv[2], sys.argv[3]
 ns = json.load(open(f"{build}/medians.json"))
 context = json.load(open(f"{build}/variant_steps.json"))["context"]
+processor = os.environ["POINTMASS_PROCESSOR"]
 scenes = ("ballistic", "spring", "far")
 rows = {scene: list(csv.DictReader(open(f"{build}/pareto-{scene}.csv"))) for scene in scenes}
 # The precisions in the order of the tables; the wide positions' arithmetic is float's.
@@ -208,7 +209,7 @@ def frame(r):
     return f"1/{round(1 / float(r['frame_time']))}"
 
 out = []
-out.append(f"Measured by `scripts/sweep.sh {repetitions}` on {context.get('num_cpus')} CPUs at "
+out.append(f"Measured by `scripts/sweep.sh {repetitions}` on {processor}, {context.get('num_cpus')} CPUs at "
            f"{context.get('mhz_per_cpu')} MHz (Release, `-O3`), medians of {repetitions} "
            "interleaved repetitions. Absolute times vary between machines and runs; the ratios "
            "(taken within one run) are the figures to compare.\n")
