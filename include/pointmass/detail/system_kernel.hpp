@@ -371,6 +371,19 @@ class SystemKernel {
   POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void advance_stored_if(
       bool movable, position_element& p, R* error, std::size_t i, R& v, R a, R t,
       const F& factors) noexcept {
+    if constexpr (!Layout::has_forces) {
+      // Every particle is movable: stepped in place, so that advance stores the velocity
+      // before it computes the displacement from v0, which then cannot be loaded from memory
+      // a second time (advance in particle.hpp says why that matters). Same bits.
+      static_cast<void>(movable);
+      R no_error = R(0);
+      R& lo = [&]() -> R& {
+        if constexpr (Layout::compensated_positions) return error[i];
+        else return no_error;
+      }();
+      advance_stored<D, P, position_storage>(p, lo, v, a, t, factors);
+      return;
+    }
     position_element p1 = p;
     R v1 = v;
     R lo = R(0);
