@@ -118,6 +118,51 @@ TEST_CASE_TEMPLATE("a zero duration changes nothing", R, float, double) {
   CHECK(p.force_accumulator() == Vector3<R>{R(1), R(0), R(0)});  // kept for the next step
 }
 
+// The step tests a zero duration and a zero inverse mass on their bits (detail::is_zero): a
+// zero of either sign is zero, on a new step length and on the kept one, for the engine's
+// equations (their own order around the power function) and for the default policies.
+template <class P>
+void check_negative_zeros() {
+  using R = typename P::real;
+  P p;
+  p.set_position({R(1), R(2), R(3)});
+  p.set_velocity({R(4), R(5), R(6)});
+  p.set_acceleration({R(0), R(-10), R(0)});
+  p.set_damping(R(0.5));
+  for (int step = 0; step < 2; ++step) {  // a new length first, then the kept one
+    CAPTURE(step);
+    const Vector3<R> position = p.position();
+    const Vector3<R> velocity = p.velocity();
+    p.add_force({R(1), R(0), R(0)});
+    p.integrate(-R(0));  // changes nothing: the force waits for the next step
+    CHECK(p.position() == position);
+    CHECK(p.velocity() == velocity);
+    CHECK(p.force_accumulator() == Vector3<R>{R(1), R(0), R(0)});
+    p.integrate(R(1) / R(60));
+    CHECK(p.position() != position);
+    CHECK(p.force_accumulator() == Vector3<R>{});
+  }
+  p.set_inverse_mass(-R(0));  // accepted as zero: immovable
+  CHECK_FALSE(p.has_finite_mass());
+  for (const R t : {R(1) / R(60), R(1) / R(30)}) {  // the kept length, then a new one
+    CAPTURE(t);
+    const Vector3<R> position = p.position();
+    const Vector3<R> velocity = p.velocity();
+    p.add_force({R(1e6), R(1e6), R(1e6)});
+    p.integrate(t);
+    CHECK(p.position() == position);
+    CHECK(p.velocity() == velocity);
+    CHECK(p.force_accumulator() == Vector3<R>{});
+  }
+}
+
+TEST_CASE_TEMPLATE("a duration or inverse mass of -0 is zero, on a new step length and the kept "
+                   "one", R, float, double) {
+  check_negative_zeros<Particle<R, damping::AccelerateThenDamp, position::Euler>>();
+  check_negative_zeros<Particle<R>>();
+  check_negative_zeros<Particle<R, damping::PerFrame, position::Kinematic>>();
+}
+
 TEST_CASE_TEMPLATE("forces accumulate for one step and act through the inverse mass", R, float,
                    double) {
   Particle<R, damping::None, position::SemiImplicit> p;

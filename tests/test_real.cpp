@@ -185,3 +185,38 @@ TEST_CASE_TEMPLATE("classification raises nothing and is exact", T, float, doubl
   CHECK(pointmass::real_sqrt(T(6.25)) == T(2.5));
   CHECK(pointmass::real_expm1(T(0)) == T(0));
 }
+
+// The step's two value tests on bit patterns (detail::same_bits, detail::is_zero): a kept
+// step length against a new one, and a zero duration or inverse mass of either sign.
+TEST_CASE_TEMPLATE("is_zero is x == 0 for every x, and same_bits is x == y where neither is NaN "
+                   "or a zero", T, float, double, long double) {
+  using pointmass::detail::is_zero;
+  const T values[] = {T(0),
+                      -T(0),
+                      std::numeric_limits<T>::denorm_min(),
+                      -std::numeric_limits<T>::denorm_min(),
+                      std::numeric_limits<T>::min(),
+                      T(1) / T(60),
+                      T(1),
+                      -T(1),
+                      std::numeric_limits<T>::max(),
+                      std::numeric_limits<T>::infinity(),
+                      -std::numeric_limits<T>::infinity(),
+                      std::numeric_limits<T>::quiet_NaN()};
+  for (const T x : values) {
+    CAPTURE(x);
+    CHECK(is_zero(x) == pointmass::real_equal(x, T(0)));
+    for (const T y : values) {
+      if (pointmass::real_isnan(x) || pointmass::real_isnan(y) ||
+          pointmass::real_equal(x, T(0)) || pointmass::real_equal(y, T(0))) {
+        continue;
+      }
+      CAPTURE(y);
+      CHECK(pointmass::detail::same_bits(x, y) == pointmass::real_equal(x, y));
+    }
+  }
+  // A step length one ulp away is another length.
+  const T t = T(1) / T(60);
+  CHECK_FALSE(pointmass::detail::same_bits(t, std::nextafter(t, T(1))));
+  static_assert(is_zero(-T(0)) && !is_zero(std::numeric_limits<T>::denorm_min()));
+}

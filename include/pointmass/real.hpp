@@ -106,6 +106,35 @@ POINTMASS_HD constexpr bool real_equal(R x, R y) noexcept {
 #endif
 }
 
+namespace detail {
+
+/// x == y where neither is NaN and they are not zeros of opposite signs (a kept step length
+/// against a new one: the kept one is never NaN or zero), as one integer comparison of the
+/// bit patterns (float and double): x == y compiles to two branches on x86, one for the
+/// unordered case, in a loop that may do nothing else besides a power function's call.
+template <Real R>
+POINTMASS_HD constexpr bool same_bits(R x, R y) noexcept {
+  if constexpr (has_ieee_bits_v<R>) {
+    using Bits = typename FloatBits<R>::type;
+    return __builtin_bit_cast(Bits, x) == __builtin_bit_cast(Bits, y);
+  } else {
+    return real_equal(x, y);
+  }
+}
+
+/// x == 0 (either sign), as one integer test of the bit pattern (float and double).
+template <Real R>
+POINTMASS_HD constexpr bool is_zero(R x) noexcept {
+  if constexpr (has_ieee_bits_v<R>) {
+    using Bits = FloatBits<R>;
+    return (__builtin_bit_cast(typename Bits::type, x) & Bits::magnitude_mask) == 0;
+  } else {
+    return real_equal(x, R(0));
+  }
+}
+
+}  // namespace detail
+
 template <Real R>
 POINTMASS_HD constexpr R real_abs(R x) noexcept {
   if constexpr (std::same_as<R, float>) return __builtin_fabsf(x);
