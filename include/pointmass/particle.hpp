@@ -313,15 +313,17 @@ class BasicParticle {
     }
     if constexpr (engine_order) {
       // The operations of advance (p1 = p0 + v0 t, v1 = (v0 + a t) d^t) on the same values,
-      // so the same bits, in the order that takes least around the power function's call
+      // so the same bits, in the order that keeps least around the power function's call
       // (every vector register is caller-saved, so what is live across it is spilled): for
-      // float the call first, so that only t is live across it; for double the engine's own
-      // order, everything but the damping computed before the call and the velocity damped
-      // after it (measured with g++ 12 -O3 -march=native, scripts/benchmark-engine.sh: float
-      // pow-first 4% faster than the engine's order, double 2% slower).
+      // float the call first, for double the engine's own order (everything but the damping
+      // before the call, the velocity damped after it); in both the new length is kept
+      // before the call and its factor after, so that nothing but the factor and the undamped
+      // velocity is needed after it. Measured with g++ 12 -O3 -march=native
+      // (scripts/benchmark-engine.sh, design.md): each the fastest of the orders tried.
+      cache_.duration = t;
       if constexpr (sizeof(real) == 4) {
         const damping_factors factors = detail::scalar_factors<D>(damping_, duration);
-        cache_ = {t, factors};
+        cache_.factors = factors;
         position_ = position_ + velocity_ * t;
         velocity_ = (velocity_ + (acceleration_ + force_accumulator_ * inverse_mass_) * t) *
                     factors.kept;
@@ -331,7 +333,7 @@ class BasicParticle {
         velocity_ = velocity_ + (acceleration_ + force_accumulator_ * inverse_mass_) * t;
         force_accumulator_ = {};
         const damping_factors factors = detail::scalar_factors<D>(damping_, duration);
-        cache_ = {t, factors};
+        cache_.factors = factors;
         velocity_ = velocity_ * factors.kept;
       }
       return;
