@@ -318,8 +318,8 @@ class BasicParticle {
       // float the call first, for double the engine's own order (everything but the damping
       // before the call, the velocity damped after it); in both the new length is kept
       // before the call and its factor after, so that nothing but the factor and the undamped
-      // velocity is needed after it. Measured with g++ 12 -O3 -march=native
-      // (scripts/benchmark-engine.sh, design.md): each the fastest of the orders tried.
+      // velocity is needed after it. Each the fastest of the orders tried with g++ 12 -O3
+      // -march=native in the engine benchmark's changing-step rows (design.md).
       cache_.duration = t;
       if constexpr (sizeof(real) == 4) {
         const damping_factors factors = detail::scalar_factors<D>(damping_, duration);
