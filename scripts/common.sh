@@ -75,12 +75,31 @@ run_repetitions() {
     --benchmark_report_aggregates_only=true --benchmark_format=json >"$json"
 }
 
-# processor_name: the processor's model, as /proc/cpuinfo names it (for the tables' Machine
-# line), or "unknown processor".
+# processor_name: the processor's model, as /proc/cpuinfo names it, with its family and model
+# numbers and the first core's caches, for the tables' Machine line (a model name such as
+# "AMD EPYC" covers several generations, whose caches and vector units differ), e.g.
+# "AMD EPYC (family 25, model 17; L1d 32 KiB, L2 1 MiB, L3 32 MiB)"; "unknown
+# processor" where /proc/cpuinfo does not name it.
 processor_name() {
-  local name
+  local name family model caches="" index level type size
   name=$(sed -n '/^model name/{s/^[^:]*:[[:space:]]*//p;q;}' /proc/cpuinfo 2>/dev/null || true)
-  echo "${name:-unknown processor}"
+  family=$(sed -n '/^cpu family/{s/^[^:]*:[[:space:]]*//p;q;}' /proc/cpuinfo 2>/dev/null || true)
+  model=$(sed -n '/^model[[:space:]]*:/{s/^[^:]*:[[:space:]]*//p;q;}' /proc/cpuinfo 2>/dev/null || true)
+  for index in /sys/devices/system/cpu/cpu0/cache/index*; do
+    [[ -r $index/level && -r $index/type && -r $index/size ]] || continue
+    level=$(<"$index/level") type=$(<"$index/type") size=$(<"$index/size")
+    [[ $type == Instruction ]] && continue
+    size=${size/%K/ KiB}
+    [[ $size == *" KiB" && $((${size% KiB} % 1024)) == 0 ]] && size="$((${size% KiB} / 1024)) MiB"
+    case $level in
+      1) caches+="${caches:+, }L1d $size" ;;
+      2) caches+="${caches:+, }L2 $size" ;;
+      *) caches+="${caches:+, }L$level $size" ;;
+    esac
+  done
+  local details="${family:+family $family, model $model}"
+  [[ -n $caches ]] && details+="${details:+; }$caches"
+  echo "${name:-unknown processor}${details:+ ($details)}"
 }
 
 # median_table JSON REPETITIONS [MORE...] <<'PY' ... PY: runs the Python script on standard
