@@ -184,7 +184,10 @@ class ParticleSystem
   void set_damping(R damping)
     requires(stores_damping && !per_particle_damping)
   {
-    if (detail::check_damping("set_damping", damping)) damping_ = damping_state(damping);
+    if (detail::check_damping("set_damping", damping)) {
+      damping_ = damping_state(damping);
+      State::forget_factors();
+    }
   }
   R damping() const noexcept
     requires(!per_particle_damping)

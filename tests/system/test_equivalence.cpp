@@ -95,6 +95,60 @@ TEST_CASE_TEMPLATE_DEFINE("uniform damping and gravity: system == Particles, bit
 }
 TEST_CASE_TEMPLATE_APPLY(uniform_equivalence, EveryPairFloatAndDouble);
 
+// A step of the length the last one took reuses its uniform damping factors; set_damping,
+// a copy and a swap must take them along or forget them, so that every step still gives what
+// Particles with the same damping give, bit for bit.
+TEST_CASE_TEMPLATE("kept damping factors follow set_damping, copies and swaps", C,
+                   Config<float, damping::PerSecond, position::Euler>,
+                   Config<double, damping::Exact, position::Exact>,
+                   Config<float, damping::AccelerateThenDamp, position::Euler>) {
+  using R = typename C::real;
+  using D = typename C::damping_policy;
+  using P = typename C::position_policy;
+  using System = ParticleSystem<R, D, P>;
+  std::mt19937 engine(7);
+  const Vector3<R> acceleration{R(0), R(-9.807), R(0)};
+  const R t = R(1) / R(60);
+  // Two systems with their Particles, damped differently.
+  const auto make = [&](R damping, System& system, std::vector<Particle<R, D, P>>& particles) {
+    system.set_acceleration(acceleration);
+    system.set_damping(damping);
+    particles.resize(count);
+    for (auto& particle : particles) {
+      particle.set_position(random_vector(engine, R(100)));
+      particle.set_velocity(random_vector(engine, R(30)));
+      particle.set_acceleration(acceleration);
+      particle.set_damping(damping);
+      REQUIRE(system.spawn(particle.position(), particle.velocity()) != System::npos);
+    }
+  };
+  System a(count), b(count);
+  std::vector<Particle<R, D, P>> pa, pb;
+  make(R(0.6), a, pa);
+  make(R(0.05), b, pb);
+  const auto step = [&](System& system, std::vector<Particle<R, D, P>>& particles) {
+    system.step(t);
+    for (auto& particle : particles) particle.integrate(t);
+    return matches(system, particles);
+  };
+  REQUIRE(step(a, pa));
+  REQUIRE(step(b, pb));
+  a.set_damping(R(0.95));  // the same length, a new damping
+  for (auto& particle : pa) particle.set_damping(R(0.95));
+  CHECK(step(a, pa));
+  swap(a, b);  // each takes the other's damping and kept factors along
+  std::swap(pa, pb);
+  CHECK(step(a, pa));
+  CHECK(step(b, pb));
+  System c = a;  // a copy: the same damping, the same kept factors
+  std::vector<Particle<R, D, P>> pc = pa;
+  CHECK(step(c, pc));
+  c.set_damping(R(0.3));
+  for (auto& particle : pc) particle.set_damping(R(0.3));
+  CHECK(step(c, pc));
+  CHECK(step(a, pa));  // the original keeps its own
+}
+
 namespace {
 
 /// n particles with their own damping, acceleration, mass and forces, in a system

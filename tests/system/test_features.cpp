@@ -98,9 +98,11 @@ TEST_CASE_TEMPLATE("each feature stores its arrays, and nothing else", R, float,
   CHECK(Forced(10).arrays().acceleration_x == nullptr);
 }
 
-TEST_CASE_TEMPLATE("uniform damping computes its factors once per step, per-particle once each",
+TEST_CASE_TEMPLATE("uniform damping computes its factors once per step length, per-particle "
+                   "once each a step",
                    R, float, double) {
-  ParticleSystem<R, CountingPerSecond> uniform(100);
+  using Uniform = ParticleSystem<R, CountingPerSecond>;
+  Uniform uniform(100);
   ParticleSystem<R, CountingPerSecond, position::Euler, features::PerParticleDamping> each(100);
   for (int i = 0; i < 100; ++i) {
     uniform.spawn({}, {R(1), R(0), R(0)});
@@ -109,7 +111,26 @@ TEST_CASE_TEMPLATE("uniform damping computes its factors once per step, per-part
   uniform.set_damping(R(0.5));
   CountingPerSecond::factor_calls = 0;
   for (int step = 0; step < 3; ++step) uniform.step(R(0.1));
-  CHECK(CountingPerSecond::factor_calls == 3);
+  CHECK(CountingPerSecond::factor_calls == 1);  // a fixed step: the factors are kept
+  uniform.step(R(0.2));
+  CHECK(CountingPerSecond::factor_calls == 2);  // a new length
+  uniform.step(R(0.1));
+  CHECK(CountingPerSecond::factor_calls == 3);  // the old length again: one entry is kept
+  uniform.set_damping(R(0.9));
+  uniform.step(R(0.1));
+  CHECK(CountingPerSecond::factor_calls == 4);  // a new damping, the same length
+  Uniform copy = uniform;
+  copy.step(R(0.1));
+  CHECK(CountingPerSecond::factor_calls == 4);  // a copy carries the kept factors
+  uniform.step(R(0));
+  CHECK(CountingPerSecond::factor_calls == 4);  // a zero step computes none
+  // A loop of one's own reads the kept factors for the kept length and computes others,
+  // without keeping them (step_parameters does not change the system).
+  static_cast<void>(uniform.step_parameters(R(0.1)));
+  CHECK(CountingPerSecond::factor_calls == 4);
+  static_cast<void>(uniform.step_parameters(R(0.3)));
+  static_cast<void>(uniform.step_parameters(R(0.3)));
+  CHECK(CountingPerSecond::factor_calls == 6);
   CountingPerSecond::factor_calls = 0;
   for (int step = 0; step < 3; ++step) each.step(R(0.1));
   CHECK(CountingPerSecond::factor_calls == 300);

@@ -52,6 +52,20 @@ class SystemState {
   using Arrays = typename Layout::Arrays;
   using StepParameters = typename Kernel::StepParameters;
   using damping_state = typename D::template State<R>;
+  using damping_factors = damping_factors_t<D, R>;
+  // True when a step keeps its uniform damping factors and length, so that the next step of
+  // the same length computes no exponential (Particle::caches_factors: the policies whose
+  // factors depend on the length), for damping shared by every particle.
+  static constexpr bool keeps_factors = !Layout::per_particle_damping &&
+                                        !std::is_empty_v<damping_factors> &&
+                                        !std::is_same_v<D, damping::PerFrame>;
+  // The last step's length (-1 before the first, and after set_damping: never a valid one) and
+  // its uniform damping factors.
+  struct KeptFactors {
+    R duration = R(-1);
+    damping_factors factors{};
+  };
+  struct NoKeptFactors {};
   using position_value = typename Storage::value;
   using user_columns = typename Layout::user_columns;
   static constexpr std::size_t user_column_count = Layout::user_column_count;
@@ -82,14 +96,16 @@ class SystemState {
         damping_(other.damping_),
         acceleration_(other.acceleration_),
         handles_(other.handles_),
-        retention_duration_(other.retention_duration_) {}
+        retention_duration_(other.retention_duration_),
+        kept_(other.kept_) {}
   SystemState(SystemState&& other) noexcept
       : block_(std::move(other.block_)),
         backward_(std::exchange(other.backward_, false)),
         damping_(other.damping_),
         acceleration_(other.acceleration_),
         handles_(std::move(other.handles_)),
-        retention_duration_(other.retention_duration_) {
+        retention_duration_(other.retention_duration_),
+        kept_(other.kept_) {
     ++other.replacements_;  // its particles left with the move
   }
   SystemState& operator=(const SystemState&) = delete;  // the system assigns by swap
@@ -103,6 +119,7 @@ class SystemState {
     std::swap(acceleration_, other.acceleration_);
     std::swap(handles_, other.handles_);
     std::swap(retention_duration_, other.retention_duration_);
+    std::swap(kept_, other.kept_);
     ++replacements_;
     ++other.replacements_;
   }
@@ -119,6 +136,7 @@ class SystemState {
   [[no_unique_address]] Table handles_{};
   // The step length the damping_retention column holds d^t for (features.hpp); -1: none.
   R retention_duration_ = R(-1);
+  [[no_unique_address]] std::conditional_t<keeps_factors, KeptFactors, NoKeptFactors> kept_{};
 
   // --- size and capacity ---------------------------------------------------------------------
 
@@ -381,12 +399,39 @@ class SystemState {
 
   // --- the step ------------------------------------------------------------------------------
 
+  // The kept factors where the last step had this length, else computed (the scalar form, the
+  // same bits): reads the system only, so loops of one's own may call it as before.
   StepParameters step_parameters(R duration) const noexcept {
+    if constexpr (keeps_factors) {
+      if (same_bits(duration, kept_.duration)) return parameters_with(duration, kept_.factors);
+    }
+    if constexpr (Layout::per_particle_damping) {
+      return parameters_with(duration, NoFactors{});
+    } else {
+      return parameters_with(duration, scalar_factors<D>(damping_, duration));
+    }
+  }
+  // step_parameters for step's own walk, which keeps the factors of a new length.
+  StepParameters keep_step_parameters(R duration) noexcept {
+    if constexpr (keeps_factors) {
+      if (!same_bits(duration, kept_.duration)) {
+        kept_.factors = scalar_factors<D>(damping_, duration);
+        kept_.duration = duration;
+      }
+      return parameters_with(duration, kept_.factors);
+    } else {
+      return step_parameters(duration);
+    }
+  }
+  // The damping changed: the next step computes its factors.
+  void forget_factors() noexcept {
+    if constexpr (keeps_factors) kept_.duration = R(-1);
+  }
+  template <class Factors>
+  StepParameters parameters_with(R duration, const Factors& factors) const noexcept {
     StepParameters parameters{};
     parameters.duration = duration;
-    if constexpr (!Layout::per_particle_damping) {  // once a step: the scalar form, same bits
-      parameters.factors = scalar_factors<D>(damping_, duration);
-    }
+    if constexpr (!Layout::per_particle_damping) parameters.factors = factors;
     parameters.acceleration = acceleration_;
     if constexpr (Layout::per_particle_retention) {
       parameters.refresh = !real_equal(duration, retention_duration_);
@@ -414,7 +459,7 @@ class SystemState {
   // Steps every particle, walking in the direction due; false when there was nothing to do.
   bool walk(R duration) {
     if (!begin_step(duration, "step")) return false;
-    const StepParameters parameters = step_parameters(duration);
+    const StepParameters parameters = keep_step_parameters(duration);
     (backward_ ? Kernel::step_range_backward : Kernel::step_range)(arrays(), 0, size(),
                                                                    parameters);
     backward_ = !backward_ && Kernel::alternates(size());
