@@ -460,8 +460,11 @@ class SystemState {
   bool walk(R duration) {
     if (!begin_step(duration, "step")) return false;
     const StepParameters parameters = keep_step_parameters(duration);
-    (backward_ ? Kernel::step_range_backward : Kernel::step_range)(arrays(), 0, size(),
-                                                                   parameters);
+    if (backward_) {
+      Kernel::step_range_backward(arrays(), 0, size(), parameters);
+    } else {
+      Kernel::step_range(arrays(), 0, size(), parameters);
+    }
     backward_ = !backward_ && Kernel::alternates(size());
     record_retention(duration);
     return true;
