@@ -409,8 +409,10 @@ class ParticleSystem
   /// AccelerateThenDamp damping). finish_step() says it too.
   void arrays_changed() noexcept { State::forget_retention(); }
 
-  /// What every particle's step of `duration` shares: computes the uniform damping factors
-  /// (the one power function of a step with uniform per-second damping). It does not check
+  /// What every particle's step of `duration` shares: the uniform damping factors (the one
+  /// power function of a step with uniform per-second damping), those `step` kept if its last
+  /// step had this length, else computed (the same bits either way); it changes nothing, so
+  /// only `step` keeps factors for the next step. It does not check
   /// the duration: call it once begin_step(duration) has accepted it (and said there is work),
   /// as step does. Likewise step_particle does not check its index: the loop's bounds are
   /// [0, size()), or step_range's, which checks them.
