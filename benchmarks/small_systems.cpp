@@ -48,7 +48,17 @@ System make_system(std::size_t count) {
   return system;
 }
 
-// Afresh = false: system.step, which keeps the factors. True: the same step, computing them.
+// The step as a loop of one's own takes it: the factors computed every time (step_parameters
+// of a system whose step never kept any).
+template <class System>
+void step_afresh(System& system, typename System::real t) {
+  if (system.begin_step(t)) {
+    System::step_range(system.arrays(), 0, system.size(), system.step_parameters(t));
+    system.finish_step();
+  }
+}
+
+// Afresh = false: system.step, which keeps the factors. True: step_afresh.
 template <class System, bool Afresh>
 void step_loop(benchmark::State& state) {
   using R = typename System::real;
@@ -60,10 +70,7 @@ void step_loop(benchmark::State& state) {
   std::int64_t steps = 0;
   for (auto _ : state) {
     if constexpr (Afresh) {
-      if (system.begin_step(t)) {
-        System::step_range(system.arrays(), 0, system.size(), system.step_parameters(t));
-        system.finish_step();
-      }
+      step_afresh(system, t);
     } else {
       system.step(t);
     }
@@ -104,10 +111,7 @@ bool same_steps() {
   System afresh = make_system<System>(37);
   for (int i = 0; i < 10; ++i) {
     kept.step(duration<R>());
-    if (afresh.begin_step(duration<R>())) {
-      System::step_range(afresh.arrays(), 0, afresh.size(), afresh.step_parameters(duration<R>()));
-      afresh.finish_step();
-    }
+    step_afresh(afresh, duration<R>());
   }
   for (std::size_t i = 0; i < kept.size(); ++i) {
     if (!(kept.position(i) == afresh.position(i)) || !(kept.velocity(i) == afresh.velocity(i))) {

@@ -329,5 +329,21 @@ template <class D, class R>
 using damping_factors_t =
     decltype(D::factors(std::declval<typename D::template State<R>>(), std::declval<R>()));
 
+namespace detail {
+/// True when D's factors depend on the step length (every policy but None and PerFrame): a
+/// Particle, and a ParticleSystem with uniform damping, keep them for the next step of the
+/// same length.
+template <class D, class R>
+inline constexpr bool keeps_factors_v =
+    !std::is_empty_v<damping_factors_t<D, R>> && !std::is_same_v<D, damping::PerFrame>;
+/// The last step's length (-1 before the first: never a valid one) and its factors.
+template <class D, class R>
+struct KeptFactors {
+  R duration = R(-1);
+  damping_factors_t<D, R> factors{};
+};
+struct NoKeptFactors {};
+}  // namespace detail
+
 }  // namespace pointmass
 

@@ -123,8 +123,7 @@ class BasicParticle {
   /// of the same length computes no exponential or power (the fixed steps games take): the
   /// policies whose factors depend on the step length (all but None and PerFrame). The kept
   /// factors are what D::factors returns, so results do not change, bit for bit.
-  static constexpr bool caches_factors =
-      !std::is_empty_v<damping_factors> && !std::is_same_v<D, damping::PerFrame>;
+  static constexpr bool caches_factors = detail::keeps_factors_v<D, real>;
   /// True when the position is stored in the arithmetic's own precision (as today).
   static constexpr bool plain_position = std::is_same_v<position_precision, real>;
   /// True for the reference engine's own equations (AccelerateThenDamp with Euler, plain
@@ -381,13 +380,6 @@ class BasicParticle {
   using position_value = typename Storage::value;
   struct NoPositionError {};
 
-  /// The last step's length (-1 before the first: never a valid one) and its factors.
-  struct FactorCache {
-    real duration = real(-1);
-    damping_factors factors{};
-  };
-  struct NoFactorCache {};
-
   template <class T, class N>
   POINTMASS_HD static constexpr Vector3<T> typed(const Vector3<N>& v) noexcept {
     return {Q::template make<T>(v.x), Q::template make<T>(v.y), Q::template make<T>(v.z)};
@@ -406,7 +398,8 @@ class BasicParticle {
   [[no_unique_address]] damping_state damping_{};
   [[no_unique_address]] std::conditional_t<Storage::compensated, Vector3<real>, NoPositionError>
       position_error_{};
-  [[no_unique_address]] std::conditional_t<caches_factors, FactorCache, NoFactorCache> cache_{};
+  [[no_unique_address]] std::conditional_t<caches_factors, detail::KeptFactors<D, real>,
+                                           detail::NoKeptFactors> cache_{};
 };
 
 /// The particle over plain numbers (SI units by convention: metres, seconds, kilograms). R is

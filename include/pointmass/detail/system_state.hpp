@@ -52,20 +52,11 @@ class SystemState {
   using Arrays = typename Layout::Arrays;
   using StepParameters = typename Kernel::StepParameters;
   using damping_state = typename D::template State<R>;
-  using damping_factors = damping_factors_t<D, R>;
-  // True when a step keeps its uniform damping factors and length, so that the next step of
-  // the same length computes no exponential (Particle::caches_factors: the policies whose
-  // factors depend on the length), for damping shared by every particle.
-  static constexpr bool keeps_factors = !Layout::per_particle_damping &&
-                                        !std::is_empty_v<damping_factors> &&
-                                        !std::is_same_v<D, damping::PerFrame>;
-  // The last step's length (-1 before the first, and after set_damping: never a valid one) and
-  // its uniform damping factors.
-  struct KeptFactors {
-    R duration = R(-1);
-    damping_factors factors{};
-  };
-  struct NoKeptFactors {};
+  // True when a step keeps its uniform damping factors and length (-1 before the first step
+  // and after set_damping), so that the next step of the same length computes no exponential,
+  // as a Particle does; with per-particle damping the damping_retention column keeps d^t.
+  static constexpr bool keeps_factors =
+      !Layout::per_particle_damping && keeps_factors_v<D, R>;
   using position_value = typename Storage::value;
   using user_columns = typename Layout::user_columns;
   static constexpr std::size_t user_column_count = Layout::user_column_count;
@@ -136,7 +127,8 @@ class SystemState {
   [[no_unique_address]] Table handles_{};
   // The step length the damping_retention column holds d^t for (features.hpp); -1: none.
   R retention_duration_ = R(-1);
-  [[no_unique_address]] std::conditional_t<keeps_factors, KeptFactors, NoKeptFactors> kept_{};
+  [[no_unique_address]] std::conditional_t<keeps_factors, KeptFactors<D, R>, NoKeptFactors>
+      kept_{};
 
   // --- size and capacity ---------------------------------------------------------------------
 
