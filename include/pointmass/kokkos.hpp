@@ -304,10 +304,14 @@ class KokkosSystem {
     if (!detail::check_duration("KokkosSystem::step", duration)) return;
 #endif
     if (real_equal(duration, real(0)) || empty()) return;
+    // The uniform damping factors, kept in settings_ for the next step of this length, as
+    // ParticleSystem::step keeps them.
+    const StepParameters parameters =
+        detail::SystemAccess::keep_step_parameters(settings_, duration);
     if constexpr (detail::kokkos_host_space_v<ExecutionSpace>) {
-      detail::kokkos_step_chunks<System>(space, arrays_, step_parameters(duration));
+      detail::kokkos_step_chunks<System>(space, arrays_, parameters);
     } else {
-      detail::kokkos_step_each<System>(space, arrays_, step_parameters(duration));
+      detail::kokkos_step_each<System>(space, arrays_, parameters);
     }
     expire(space);
     space.fence();

@@ -83,7 +83,8 @@ bool step_chunks(ExecutionPolicy&& policy, System& system, R duration) {
   if (!system.begin_step(duration, "step")) return false;
   constexpr std::size_t chunk = 16384;
   const typename System::Arrays& arrays = system.arrays();
-  const typename System::StepParameters parameters = system.step_parameters(duration);
+  const typename System::StepParameters parameters =
+      SystemAccess::keep_step_parameters(system, duration);
   const std::size_t size = system.size();
   const std::size_t chunks = (size + chunk - 1) / chunk;
   const unsigned modes = FlushModeBits::modes();
@@ -96,22 +97,6 @@ bool step_chunks(ExecutionPolicy&& policy, System& system, R duration) {
   return true;
 }
 
-/// After step_chunks stepped every particle with step_parameters(duration): what
-/// ParticleSystem::step does after its walk. Unlike finish_step() (which cannot know what a
-/// loop of the caller's did, and so forgets), it keeps the damping_retention column's d^t as
-/// this duration's, so that the next step of the same length computes no exponential.
-struct SystemAccess {
-  template <class System, class R, class OnExpire>
-  static void finish_step(System& system, R duration, OnExpire& on_expire) {
-    system.record_retention(duration);  // the state's, reached through the system
-    system.expire(on_expire);
-  }
-  template <class System, class R>
-  static void finish_step(System& system, R duration) {
-    typename System::NoCallback none;  // the state's, named through the system
-    finish_step(system, duration, none);
-  }
-};
 }  // namespace detail
 
 /// Steps `system` by `duration` with the execution policy `policy` (for example

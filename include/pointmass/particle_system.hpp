@@ -438,8 +438,33 @@ class ParticleSystem
   using State::expired;
 
  private:
-  friend struct detail::SystemAccess;  // parallel.hpp: a step that keeps d^t as step does
+  friend struct detail::SystemAccess;  // parallel.hpp, kokkos.hpp: steps that keep as step does
 };
+
+namespace detail {
+/// What ParticleSystem::step does around its walk, for the steps of parallel.hpp and
+/// kokkos.hpp: before it, the uniform damping factors kept for the step length
+/// (keep_step_parameters; step_parameters() keeps none); after it, the damping_retention
+/// column's d^t kept as this duration's (finish_step(), which cannot know what a loop of the
+/// caller's did, forgets it). So the next step of the same length computes no exponential,
+/// as after step.
+struct SystemAccess {
+  template <class System, class R>
+  static typename System::StepParameters keep_step_parameters(System& system, R duration) {
+    return system.keep_step_parameters(duration);  // the state's, reached through the system
+  }
+  template <class System, class R, class OnExpire>
+  static void finish_step(System& system, R duration, OnExpire& on_expire) {
+    system.record_retention(duration);  // the state's, reached through the system
+    system.expire(on_expire);
+  }
+  template <class System, class R>
+  static void finish_step(System& system, R duration) {
+    typename System::NoCallback none;  // the state's, named through the system
+    finish_step(system, duration, none);
+  }
+};
+}  // namespace detail
 
 }  // namespace pointmass
 

@@ -4,6 +4,7 @@
 // arrays, a bad duration is reported and changes nothing; systems with wide positions step
 // as the host steps them.
 #include "kokkos_support.hpp"
+#include "../support/counting_damping.hpp"
 
 #include <stdexcept>
 #include <type_traits>
@@ -128,6 +129,44 @@ TEST_CASE("settings steer the step: the uniform acceleration") {
   device.copy_to(back);
   CHECK(test::same_arrays(back, host));
   CHECK(back.acceleration().y == 100.0f);
+}
+
+TEST_CASE("the step keeps the uniform damping factors for its length, as ParticleSystem::step") {
+  // A fixed step computes the factors once; settings().set_damping forgets them; what is
+  // stepped with the kept factors is what ParticleSystem::step gives with its own.
+  using Counted = ParticleSystem<float, test::CountingPerSecond>;
+  Counted host;
+  for (int i = 0; i < 40; ++i) {
+    host.spawn({float(i), 0.0f, 0.0f}, {1.0f, 2.0f, float(i)});
+  }
+  host.set_damping(0.5f);
+  DeviceSystem<Counted> device(host);
+  auto& calls = test::CountingPerSecond::factor_calls;
+  calls = 0;
+  for (int step = 0; step < 3; ++step) device.step(Space(), 0.125f);
+  CHECK(calls == 1);  // a fixed step: computed once, then kept
+  device.step(Space(), 0.25f);
+  CHECK(calls == 2);  // a new length
+  device.settings().set_damping(0.25f);
+  device.step(Space(), 0.25f);
+  CHECK(calls == 3);  // a new damping, the same length
+  for (int step = 0; step < 3; ++step) host.step(0.125f);
+  host.step(0.25f);
+  host.set_damping(0.25f);
+  host.step(0.25f);
+  Counted back;
+  device.copy_to(back);
+  CHECK(test::same_arrays(back, host));
+  // copy_from takes another damping (through set_damping): the kept factors are forgotten.
+  Counted other = host;
+  other.set_damping(0.75f);
+  device.copy_from(other);
+  calls = 0;
+  device.step(Space(), 0.25f);
+  CHECK(calls == 1);
+  other.step(0.25f);
+  device.copy_to(back);
+  CHECK(test::same_arrays(back, other));
 }
 
 TEST_CASE("view<C> is the array C of the live particles") {

@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "counting_damping.hpp"
 #include "system_support.hpp"
 
 using namespace pointmass;
@@ -109,6 +110,45 @@ TEST_CASE("a parallel step keeps each particle's d^t for its step length, as the
     CHECK_FALSE(parallel.step_parameters(t).refresh);  // d^t kept for t: no refresh pass
     CHECK(parallel.step_parameters(t / 2).refresh);     // another length: computed again
   }
+  bool same = true;
+  for (std::size_t i = 0; i < serial.size(); ++i) {
+    same = same && same_bits(serial.position(i), parallel.position(i)) &&
+           same_bits(serial.velocity(i), parallel.velocity(i));
+  }
+  CHECK(same);
+}
+
+TEST_CASE_TEMPLATE("a parallel step keeps the uniform damping factors for its step length, as "
+                   "the serial one",
+                   R, float, double) {
+  // step keeps the factors of its last length (ParticleSystem::step_parameters reads them);
+  // the parallel step must keep them too, forget them with set_damping, and step as the
+  // serial step does with them, bit for bit.
+  using System = ParticleSystem<R, pointmass::test::CountingPerSecond>;
+  std::mt19937 engine(13);
+  System serial(40'000);
+  for (std::size_t i = 0; i < 40'000; ++i) {
+    serial.spawn(random_vector(engine, R(50)), random_vector(engine, R(20)));
+  }
+  serial.set_damping(R(0.5));
+  System parallel = serial;
+  auto& calls = pointmass::test::CountingPerSecond::factor_calls;
+  calls = 0;
+  for (int step = 0; step < 3; ++step) pointmass::step(std::execution::par_unseq, parallel, R(0.1));
+  CHECK(calls == 1);  // a fixed step: computed once, then kept
+  pointmass::step(std::execution::par_unseq, parallel, R(0.2));
+  CHECK(calls == 2);  // a new length
+  static_cast<void>(parallel.step_parameters(R(0.2)));
+  CHECK(calls == 2);  // what the parallel step kept, step_parameters reads
+  parallel.set_damping(R(0.9));
+  pointmass::step(std::execution::par_unseq, parallel, R(0.2));
+  CHECK(calls == 3);  // a new damping, the same length
+  serial.step(R(0.1));
+  serial.step(R(0.1));
+  serial.step(R(0.1));
+  serial.step(R(0.2));
+  serial.set_damping(R(0.9));
+  serial.step(R(0.2));
   bool same = true;
   for (std::size_t i = 0; i < serial.size(); ++i) {
     same = same && same_bits(serial.position(i), parallel.position(i)) &&
