@@ -36,9 +36,11 @@
 //                                 copy_interpolated_positions
 //   system/hand_off.hpp           copy_positions, positions_relative_to, position_relative_to
 //
-// Owns: the public API and the line of facets. Below it: features.hpp (the tags and the table
-// of arrays), detail/system_state.hpp (what the system holds, and how each call works),
-// detail/soa_block.hpp (the one allocation), detail/system_kernel.hpp (the step loop).
+// Owns: the public API, the line of facets, and detail::SystemAccess (what the steps of
+// parallel.hpp and kokkos.hpp reach of the state). Below it: features.hpp (the tags and the
+// table of arrays), detail/system_state.hpp (what the system holds, and how each call
+// works), detail/soa_block.hpp (the one allocation), detail/system_kernel.hpp (the step
+// loop).
 // Must not include: <execution> or anything that starts threads (parallel.hpp adds those).
 #pragma once
 

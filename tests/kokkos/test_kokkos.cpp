@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 // KokkosSystem's own behaviour: copies both ways carry every stored array and the uniform
 // values, expiry leaves the order swap-remove leaves, settings steer the step, views see the
-// arrays, a bad duration is reported and changes nothing; systems with wide positions step
-// as the host steps them.
+// arrays, a bad duration is reported and changes nothing, the step keeps the uniform damping
+// factors for its length; systems with wide positions step as the host steps them.
 #include "kokkos_support.hpp"
 #include "../support/counting_damping.hpp"
 

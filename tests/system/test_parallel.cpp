@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // pointmass::step(std::execution::par_unseq, system, t) computes what system.step(t) does,
-// bit for bit, over many chunks, and under FlushDenormals as well.
+// bit for bit, over many chunks, and under FlushDenormals as well; like it, it keeps the
+// damping factors for its step length.
 #include <pointmass/denormals.hpp>
 #include <pointmass/parallel.hpp>
 
@@ -134,7 +135,9 @@ TEST_CASE_TEMPLATE("a parallel step keeps the uniform damping factors for its st
   System parallel = serial;
   auto& calls = pointmass::test::CountingPerSecond::factor_calls;
   calls = 0;
-  for (int step = 0; step < 3; ++step) pointmass::step(std::execution::par_unseq, parallel, R(0.1));
+  for (int step = 0; step < 3; ++step) {
+    pointmass::step(std::execution::par_unseq, parallel, R(0.1));
+  }
   CHECK(calls == 1);  // a fixed step: computed once, then kept
   pointmass::step(std::execution::par_unseq, parallel, R(0.2));
   CHECK(calls == 2);  // a new length
