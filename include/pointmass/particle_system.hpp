@@ -412,11 +412,11 @@ class ParticleSystem
   void arrays_changed() noexcept { State::forget_retention(); }
 
   /// What every particle's step of `duration` shares: the uniform damping factors (the one
-  /// power function of a step with uniform per-second damping), those `step` kept if its last
-  /// step had this length, else computed (the same bits either way); it changes nothing, so
-  /// only `step` keeps factors for the next step. It does not check
-  /// the duration: call it once begin_step(duration) has accepted it (and said there is work),
-  /// as step does. Likewise step_particle does not check its index: the loop's bounds are
+  /// power function of a step with uniform per-second damping), those the last step kept if it
+  /// had this length, else computed (the same bits either way). It changes nothing: only the
+  /// library's steps (`step`, the parallel step, KokkosSystem::step) keep factors for the next
+  /// step. It does not check the duration: call it once begin_step(duration) has accepted it
+  /// (and said there is work), as step does. Likewise step_particle does not check its index: the loop's bounds are
   /// [0, size()), or step_range's, which checks them.
   using State::step_parameters;
   /// True if a step of `duration` has work to do; reports a bad duration (when checked).

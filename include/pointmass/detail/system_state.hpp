@@ -403,7 +403,8 @@ class SystemState {
       return parameters_with(duration, scalar_factors<D>(damping_, duration));
     }
   }
-  // step_parameters for step's own walk, which keeps the factors of a new length.
+  // step_parameters for the library's steps (walk, and through SystemAccess the parallel and
+  // Kokkos steps), which keep the factors of a new length.
   StepParameters keep_step_parameters(R duration) noexcept {
     if constexpr (keeps_factors) {
       if (!same_bits(duration, kept_.duration)) {
