@@ -370,19 +370,23 @@ struct PositionStorage<Compensated<R>> {
         return round_offset<T, BranchFree>(s, (p - (s - b)) + (-origin - b));
       }
     }
+    // Each error term is taken negated (TwoSum's subtractions reversed, as exact), so that
+    // where every one is zero they come out +0 and z = s2 - +0 keeps s2's zero: -0 (only for
+    // hi = lo = -0 and a +0 origin) as the road above and IEEE's -0 - +0 give it. With the
+    // terms added, s2 + +0 turned that -0 into +0.
     const value s = h - origin;
     const value b = s - h;
-    const value e = (h - (s - b)) + (-origin - b);
+    const value ne = ((s - b) - h) + (b + origin);  // -e: hi - origin = s + e
     const value s2 = s + l;
     const value b2 = s2 - s;
-    const value e2 = (s - (s2 - b2)) + (l - b2);
-    const value t = e + e2;
-    const value bt = t - e;
-    const value te = (e - (t - bt)) + (e2 - bt);
-    const value z = s2 + t;
+    const value ne2 = ((s2 - b2) - s) + (b2 - l);  // -e2: s + lo = s2 + e2
+    const value nt = ne + ne2;                      // -t, rounded: e + e2 = t + te
+    const value bt = nt - ne;
+    const value nte = ((nt - bt) - ne) + (bt - ne2);  // -te
+    const value z = s2 - nt;                          // s2 + t = z + ze
     const value bz = z - s2;
-    const value ze = (s2 - (z - bz)) + (t - bz);
-    return round_offset<T, BranchFree>(z, ze + te);
+    const value ze = (s2 - (z - bz)) - (nt + bz);
+    return round_offset<T, BranchFree>(z, ze - nte);
   }
 };
 

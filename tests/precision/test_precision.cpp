@@ -686,6 +686,32 @@ TEST_CASE("render-relative: a particle and the system agree, and a short buffer 
   CHECK(same_bits(short_buffer[0], Vector3<float>{7.0f, 7.0f, 7.0f}));
 }
 
+// A zero offset's sign is IEEE's p - origin (-0 - +0 is -0, every other zero difference +0) on
+// every road: the batch's branch-free one (which once gave +0 for a compensated -0, hi = lo =
+// -0, from a +0 origin), the one-particle one and the particle's.
+TEST_CASE_TEMPLATE("render-relative: a zero offset has IEEE's sign of zero on every road", S,
+                   DoublePositions, CompensatedPositions) {
+  const double values[] = {-0.0, 0.0, -3.0};
+  for (const double p : values) {
+    for (const double o : values) {
+      CAPTURE(p);
+      CAPTURE(o);
+      pm::Particle<S> particle;
+      particle.set_position({p, p, p});
+      pm::ParticleSystem<S> system(1);
+      system.spawn(particle);
+      const Vector3<double> origin{o, o, o};
+      const auto wanted = static_cast<float>(p - o);
+      const Vector3<float> expected{wanted, wanted, wanted};
+      Vector3<float> batch[1];
+      system.positions_relative_to(origin, batch);
+      CHECK(same_bits(batch[0], expected));
+      CHECK(same_bits(system.position_relative_to(0, origin), expected));
+      CHECK(same_bits(particle.position_relative_to(origin), expected));
+    }
+  }
+}
+
 TEST_CASE("spawn(particle) copies a compensated position's error term: the system goes on bit for bit") {
   pm::Particle<CompensatedPositions, pm::damping::PerSecond, pm::position::Kinematic> particle;
   particle.set_position({3.0e6, -1.0e6, 5.0e5});
