@@ -370,22 +370,48 @@ class SystemState {
     }
   }
   /// Particle i's offset from origin, each component rounded once to T (precision.hpp's
-  /// relative; BranchFree for a loop over many particles).
-  template <Real T, bool BranchFree = false>
+  /// relative; relative_all below for a loop over every particle).
+  template <Real T>
   static Vector3<T> relative(const Arrays& a, std::size_t i,
                              const Vector3<position_value>& origin) noexcept {
     if constexpr (compensated) {
-      return {
-          Storage::template relative<T, BranchFree>(a.position_x[i], a.position_error_x[i],
-                                                    origin.x),
-          Storage::template relative<T, BranchFree>(a.position_y[i], a.position_error_y[i],
-                                                    origin.y),
-          Storage::template relative<T, BranchFree>(a.position_z[i], a.position_error_z[i],
-                                                    origin.z)};
+      return {Storage::template relative<T>(a.position_x[i], a.position_error_x[i], origin.x),
+              Storage::template relative<T>(a.position_y[i], a.position_error_y[i], origin.y),
+              Storage::template relative<T>(a.position_z[i], a.position_error_z[i], origin.z)};
     } else {
-      return {Storage::template relative<T, BranchFree>(a.position_x[i], origin.x),
-              Storage::template relative<T, BranchFree>(a.position_y[i], origin.y),
-              Storage::template relative<T, BranchFree>(a.position_z[i], origin.z)};
+      return {Storage::template relative<T>(a.position_x[i], origin.x),
+              Storage::template relative<T>(a.position_y[i], origin.y),
+              Storage::template relative<T>(a.position_z[i], origin.z)};
+    }
+  }
+
+  /// Every particle's offset from origin into out[0, a.size), each component rounded once
+  /// without a branch (round_via_odd; precision.hpp's BranchFree road). The column pointers
+  /// are read once into locals: so clang vectorises the loop too (it checks at run time that
+  /// out does not overlap them), where it kept the loop over relative(a, i, origin) scalar.
+  template <Real T>
+  static void relative_all(const Arrays& a, const Vector3<position_value>& origin,
+                           Vector3<T>* out) noexcept {
+    using E = typename Layout::position_element;
+    const std::size_t n = a.size;
+    const E* const px = a.position_x;
+    const E* const py = a.position_y;
+    const E* const pz = a.position_z;
+    if constexpr (compensated) {
+      const E* const ex = a.position_error_x;
+      const E* const ey = a.position_error_y;
+      const E* const ez = a.position_error_z;
+      for (std::size_t i = 0; i < n; ++i) {
+        out[i] = {Storage::template relative<T, true>(px[i], ex[i], origin.x),
+                  Storage::template relative<T, true>(py[i], ey[i], origin.y),
+                  Storage::template relative<T, true>(pz[i], ez[i], origin.z)};
+      }
+    } else {
+      for (std::size_t i = 0; i < n; ++i) {
+        out[i] = {Storage::template relative<T, true>(px[i], origin.x),
+                  Storage::template relative<T, true>(py[i], origin.y),
+                  Storage::template relative<T, true>(pz[i], origin.z)};
+      }
     }
   }
 

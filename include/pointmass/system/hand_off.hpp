@@ -77,10 +77,7 @@ class SystemHandOff : public Base {
         !detail::check_buffer("positions_relative_to", "buffer", buffer.size(), this->size())) {
       return;
     }
-    const typename Base::Arrays a = this->arrays();
-    for (std::size_t i = 0; i < a.size; ++i) {
-      buffer[i] = Base::template relative<float, true>(a, i, origin);
-    }
+    Base::template relative_all<float>(this->arrays(), origin, buffer.data());
   }
 };
 
