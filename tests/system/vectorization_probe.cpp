@@ -4,7 +4,8 @@
 // report can only be about that configuration's loops (the list of configurations is in
 // CMakeLists.txt). With POINTMASS_PROBE_BACKWARD it instantiates only the backward walk
 // (step_range_backward), and no other loop (Lifetime's expiry pass), so a vectorised loop
-// in the report can only be that walk's.
+// in the report can only be that walk's. With POINTMASS_PROBE_EXPIRY it instantiates only
+// finish_step, whose expiry pass scans a block of particles for an expired one.
 // With POINTMASS_PROBE_RELATIVE it compiles only positions_relative_to of a system with double
 // positions, or with POINTMASS_PROBE_COMPENSATED as well of one with compensated positions
 // (the renderer's hand-off from wide positions; round_via_odd has no branch).
@@ -88,7 +89,10 @@ namespace pm = pointmass;
 using ProbedSystem = POINTMASS_PROBE_SYSTEM;
 
 void step_probe(ProbedSystem& system, ProbedSystem::real t) {
-#if defined(POINTMASS_PROBE_BACKWARD)
+#if defined(POINTMASS_PROBE_EXPIRY)
+  static_cast<void>(t);
+  system.finish_step();  // the expiry pass alone
+#elif defined(POINTMASS_PROBE_BACKWARD)
   ProbedSystem::step_range_backward(system.arrays(), 0, system.size(), system.step_parameters(t));
 #else
   system.step(t);
