@@ -712,6 +712,21 @@ TEST_CASE_TEMPLATE("render-relative: a zero offset has IEEE's sign of zero on ev
   }
 }
 
+// The origin is the one of the call, even where it is read from the buffer being written (a
+// float system's origin and offsets are both Vector3<float>): particle 1 is not measured from
+// the offset just written for particle 0.
+TEST_CASE("render-relative: an origin read from the buffer being written is the call's origin") {
+  pm::ParticleSystem<float> system(3);
+  system.spawn({1.0f, 2.0f, 3.0f}, {});
+  system.spawn({4.0f, 5.0f, 6.0f}, {});
+  system.spawn({7.0f, 8.0f, 9.0f}, {});
+  std::vector<Vector3<float>> buffer(3, Vector3<float>{1.0f, 1.0f, 1.0f});
+  system.positions_relative_to(buffer[0], buffer);
+  CHECK(same_bits(buffer[0], Vector3<float>{0.0f, 1.0f, 2.0f}));
+  CHECK(same_bits(buffer[1], Vector3<float>{3.0f, 4.0f, 5.0f}));
+  CHECK(same_bits(buffer[2], Vector3<float>{6.0f, 7.0f, 8.0f}));
+}
+
 TEST_CASE("spawn(particle) copies a compensated position's error term: the system goes on bit for bit") {
   pm::Particle<CompensatedPositions, pm::damping::PerSecond, pm::position::Kinematic> particle;
   particle.set_position({3.0e6, -1.0e6, 5.0e5});

@@ -389,8 +389,10 @@ class SystemState {
   /// without a branch (round_via_odd; precision.hpp's BranchFree road). The column pointers
   /// are read once into locals: so clang vectorises the loop too (it checks at run time that
   /// out does not overlap them), where it kept the loop over relative(a, i, origin) scalar.
+  /// The origin is taken by value: every offset is from the origin of the call, even one read
+  /// from the buffer being written.
   template <Real T>
-  static void relative_all(const Arrays& a, const Vector3<position_value>& origin,
+  static void relative_all(const Arrays& a, const Vector3<position_value> origin,
                            Vector3<T>* out) noexcept {
     using E = typename Layout::position_element;
     const std::size_t n = a.size;
