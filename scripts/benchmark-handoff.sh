@@ -4,9 +4,9 @@
 # benchmarks/system_step.cpp with -O3 -march=native (Release), runs the step and the copy-out
 # rows with interleaved repetitions, and writes their medians (M particles/s) and the time of
 # each against the lean step's, measured in the same run, between the handoff markers. Builds
-# it with clang as well and runs the positions_relative_to rows and the lean step there: their
-# loop is the one a compiler may leave scalar, and each compiler's rows are timed against its
-# own lean step.
+# it with clang as well and runs the lean step, the strided copy and the positions_relative_to
+# rows there: the loops whose speed depends on the compiler's choices (a loop left scalar, or
+# vectorised with scatter stores), each compiler's rows timed against its own lean step.
 # Usage: scripts/benchmark-handoff.sh [repetitions]
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -21,7 +21,7 @@ trap 'rm -f "$json" "$clang_json"' EXIT
 run_repetitions "$json" "$build/benchmarks/system_step" "$repetitions" 0.05 \
   --benchmark_filter='BM_System<(Sparks|Interpolated|GameSparks)<float>>/(100000|1000000)$|BM_Copy|BM_Relative'
 run_repetitions "$clang_json" "$build-clang/benchmarks/system_step" "$repetitions" 0.05 \
-  --benchmark_filter='BM_System<Sparks<float>>/(100000|1000000)$|BM_Relative'
+  --benchmark_filter='BM_System<Sparks<float>>/(100000|1000000)$|BM_CopyStrided|BM_Relative'
 # One report: clang's runs named "clang:" + name (so the noisy-run note covers both).
 python3 - "$json" "$clang_json" <<'PY'
 import json, sys
@@ -53,6 +53,7 @@ rows = [("`step`, `ParticleSystem<float>` (lean)", "BM_System<Sparks<float>>"),
         ("`positions_relative_to` a camera, `Precision<float, Compensated<float>>`",
          "BM_Relative<Precision<float, Compensated<float>>>"),
         ("`step`, lean, clang", "clang:BM_System<Sparks<float>>"),
+        ("`copy_positions`, stride 6, clang", "clang:BM_CopyStrided<float>"),
         ("`positions_relative_to`, `Precision<float, double>`, clang",
          "clang:BM_Relative<Precision<float, double>>"),
         ("`positions_relative_to`, `Precision<float, Compensated<float>>`, clang",
