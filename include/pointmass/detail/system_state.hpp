@@ -641,21 +641,16 @@ class SystemState {
     const std::size_t needed = rows != 0 && stride > (most - 3) / rows ? most : rows * stride + 3;
     if (!check_strided_buffer(function, out.size(), needed)) return;
     T* data = out.data();
-    if (stride == 3) {  // packed: x, y, z of one particle after another's
-      for_each_output_position(alpha, 0, size(), [&](std::size_t i, auto x, auto y, auto z) {
-        T* vertex = data + i * 3;
-        vertex[0] = static_cast<T>(x);
-        vertex[1] = static_cast<T>(y);
-        vertex[2] = static_cast<T>(z);
-      });
-      return;
-    }
-    for_each_output_position<true>(alpha, 0, size(), [&](std::size_t i, auto x, auto y, auto z) {
+    const auto store = [&](std::size_t i, auto x, auto y, auto z) {
       T* vertex = data + i * stride;
       vertex[0] = static_cast<T>(x);
       vertex[1] = static_cast<T>(y);
       vertex[2] = static_cast<T>(z);
-    });
+    };
+    // Packed (x, y, z of one particle after another's): vectorised; any other stride
+    // scatters (output_loop).
+    if (stride == 3) for_each_output_position(alpha, 0, size(), store);
+    else for_each_output_position<true>(alpha, 0, size(), store);
   }
   template <class V>
   void copy_vectors(const char* function, R alpha, std::span<V> out) const {
