@@ -107,22 +107,48 @@ TEST_CASE("a copy's arrays() has the copy's size, so a step_particle loop over i
   CHECK(empty_copy.arrays().size == 0);
 }
 
-TEST_CASE("index reads and writes beyond size() are reported, naming the index") {
+TEST_CASE("index reads and writes beyond size() are reported, naming the function and the index") {
   Forced system = three_particles<Forced>();
   const Forced before = system;
-  const std::string prefix = "argument 'index' = 3 must be < size()";
-  CHECK(invalid_argument_of([&] { (void)system.position(3); }).find(prefix) != std::string::npos);
-  CHECK(invalid_argument_of([&] { (void)system.velocity(3); }).find(prefix) != std::string::npos);
-  CHECK(invalid_argument_of([&] { (void)system.acceleration(3); }).find(prefix) !=
-        std::string::npos);
-  CHECK(invalid_argument_of([&] { (void)system.damping(3); }).find(prefix) != std::string::npos);
-  CHECK(invalid_argument_of([&] { (void)system.inverse_mass(3); }).find(prefix) !=
-        std::string::npos);
-  CHECK(invalid_argument_of([&] { system.add_force(3, {1, 1, 1}); }).find(prefix) !=
-        std::string::npos);
-  CHECK(invalid_argument_of([&] { system.kill(3); }).find(prefix) != std::string::npos);
+  // "FUNCTION: argument 'index' = 3 must be < size()": each names itself, not another.
+  const auto reported = [](const char* function, auto f) {
+    const std::string message = invalid_argument_of(f);
+    INFO(function, ": ", message);
+    return message.find(std::string(function) + ": argument 'index' = 3 must be < size()") !=
+           std::string::npos;
+  };
+  CHECK(reported("position", [&] { (void)system.position(3); }));
+  CHECK(reported("velocity", [&] { (void)system.velocity(3); }));
+  CHECK(reported("acceleration", [&] { (void)system.acceleration(3); }));
+  CHECK(reported("damping", [&] { (void)system.damping(3); }));
+  CHECK(reported("inverse_mass", [&] { (void)system.inverse_mass(3); }));
+  CHECK(reported("add_force", [&] { system.add_force(3, {1, 1, 1}); }));
+  CHECK(reported("kill", [&] { system.kill(3); }));
+  CHECK(reported("set_position", [&] { system.set_position(3, {1, 1, 1}); }));
+  CHECK(reported("set_velocity", [&] { system.set_velocity(3, {1, 1, 1}); }));
+  CHECK(reported("set_mass", [&] { system.set_mass(3, 2.0f); }));
+  CHECK(reported("set_inverse_mass", [&] { system.set_inverse_mass(3, 0.5f); }));
   CHECK(same_particles(system, before));
   CHECK(system.force_accumulator(2) == Vector3<float>{});
+  CHECK(system.inverse_mass(2) == before.inverse_mass(2));
+  // Each particle's own acceleration and damping.
+  using Own = ParticleSystem<float, damping::PerSecond, position::Euler,
+                             features::PerParticleAcceleration, features::PerParticleDamping>;
+  Own own = three_particles<Own>();
+  CHECK(reported("set_acceleration", [&] { own.set_acceleration(3, {1, 1, 1}); }));
+  CHECK(reported("set_damping", [&] { own.set_damping(3, 0.5f); }));
+  CHECK(same_particles(own, three_particles<Own>()));
+  // The features' own.
+  using Game = ParticleSystem<float, damping::None, position::Euler, features::Lifetime,
+                              features::Interpolation>;
+  Game game = three_particles<Game>();
+  game.set_lifetime(2, 5.0f);
+  CHECK(reported("set_lifetime", [&] { game.set_lifetime(3, 1.0f); }));
+  CHECK(reported("lifetime", [&] { (void)game.lifetime(3); }));
+  CHECK(reported("age", [&] { (void)game.age(3); }));
+  CHECK(reported("previous_position", [&] { (void)game.previous_position(3); }));
+  CHECK(reported("interpolated_position", [&] { (void)game.interpolated_position(3, 0.5f); }));
+  CHECK(game.lifetime(2) == 5.0f);
 }
 
 TEST_CASE("step_range and step_range_backward check their range against arrays().size") {

@@ -130,6 +130,31 @@ TEST_CASE_TEMPLATE("closed form matches Boost.Odeint's dopri5 in every regime", 
   }
 }
 
+TEST_CASE_TEMPLATE("closed form just over critical damping: each part of the state to a few "
+                   "epsilons of itself", R, float, double) {
+  // gamma just above w0 = 1: lambda = sqrt(gamma^2 - w0^2) is small, and so is lambda t, where
+  // e^(-gamma t) sinh(lambda t) / lambda must not come from the difference of two nearly
+  // equal exponentials. Released at rest from x0 = 1, the velocity is -w0^2 times that factor
+  // alone, so it is checked relative to itself. The reference: the same closed form in long
+  // double from the same (rounded) gamma, with sinh, which is accurate for small arguments.
+  for (const double excess : {1e-6, 1e-4, 1e-2}) {
+    const R gamma = R(1.0 + excess);
+    for (const double t : {1e-3, 1e-2, 0.1, 1.0}) {
+      CAPTURE(excess);
+      CAPTURE(t);
+      const long double g = gamma;
+      const long double lambda = std::sqrt((g - 1.0L) * (g + 1.0L));
+      REQUIRE(lambda * t < 0.5L);  // the region this test is for
+      const long double es = std::exp(-g * t) * std::sinh(lambda * t) / lambda;
+      const long double ec = std::exp(-g * t) * std::cosh(lambda * t);
+      const auto s = forces::damped_oscillator<R>(R(1), gamma, {R(1), R(0), R(0)}, {}, R(t));
+      INFO("v = ", s.velocity.x, ", expected ", double(-es));
+      CHECK(close(s.velocity.x, R(-es), R(16), R(0)));
+      CHECK(close(s.position.x, R(ec + g * es), R(16), R(0)));
+    }
+  }
+}
+
 TEST_CASE_TEMPLATE("closed form: no NaN and decay for huge times and extreme damping", R, float,
                    double) {
   const Vector3<R> x{R(1), R(-2), R(0.5)};

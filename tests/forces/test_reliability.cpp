@@ -92,6 +92,11 @@ TEST_CASE_TEMPLATE("springs and drag far from the origin: finite, and zero when 
   const Vector3<R> across = force_on(forces::AnchoredSpring<R>({-max, R(0), R(0)}, R(1e-3), R(0)),
                                      top);
   CHECK(close(across.x, R(-2e-3) * max, R(16), R(0)));
+  // ... with its rest length: stretched to 2 max from max / 2, it pulls with k 1.5 max.
+  const Vector3<R> stretched = force_on(
+      forces::AnchoredSpring<R>({-max, R(0), R(0)}, R(1e-3), max / R(2)), top);
+  CHECK(close(stretched.x, R(-1.5e-3) * max, R(16), R(0)));
+  CHECK(stretched.y == R(0));
   // A spring compressed to a length whose square underflows pushes with k (L - |d|).
   const Particle<R> close_in = body_at<R>({tiny<R>, R(0), R(0)});
   const Vector3<R> push = force_on(forces::AnchoredSpring<R>({}, R(10), R(2)), close_in);

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -193,6 +195,40 @@ TEST_CASE_TEMPLATE("stiff spring advance: like integrate for immovable bodies, z
   }
   CHECK(threw);
   CHECK(body.position() == Vector3<R>{R(1), R(0), R(0)});
+}
+
+TEST_CASE_TEMPLATE("stiff spring advance: a state beyond the range is reported, naming the "
+                   "part that left it, and nothing changes", R, float, double) {
+  const R max = std::numeric_limits<R>::max();
+  // The message of the std::invalid_argument that advance throws ("" if none).
+  const auto report = [](const forces::StiffSpring<R>& spring, Body<R>& body, R duration) {
+    try {
+      spring.advance(body, duration);
+    } catch (const std::invalid_argument& error) {
+      return std::string(error.what());
+    }
+    return std::string();
+  };
+  // w0 = 1e6 rad/s (k = 1e12, m = 1), released at rest from max / 1000: the position stays
+  // within its start, the velocity, up to w0 times it, does not.
+  const forces::StiffSpring<R> stiff({}, R(1e12), R(0));
+  Body<R> fast;
+  fast.set_position({max / R(1000), R(0), R(0)});
+  const std::string velocity_report = report(stiff, fast, R(1));
+  INFO(velocity_report);
+  CHECK(velocity_report.find("StiffSpring::advance: argument 'velocity'") != std::string::npos);
+  CHECK(fast.position() == Vector3<R>{max / R(1000), R(0), R(0)});
+  CHECK(fast.velocity() == Vector3<R>{});
+  // w0 = 1e-3 rad/s (k = 1e-6), moving at max / 2 for 2,000 s (w0 t = 2): the velocity stays
+  // within its start, the position, up to the velocity / w0, does not.
+  const forces::StiffSpring<R> weak({}, R(1e-6), R(0));
+  Body<R> far;
+  far.set_velocity({max / R(2), R(0), R(0)});
+  const std::string position_report = report(weak, far, R(2000));
+  INFO(position_report);
+  CHECK(position_report.find("StiffSpring::advance: argument 'position'") != std::string::npos);
+  CHECK(far.position() == Vector3<R>{});
+  CHECK(far.velocity() == Vector3<R>{max / R(2), R(0), R(0)});
 }
 
 TEST_CASE_TEMPLATE("position-only stiff spring: a period sqrt(2) too long at every step", R,

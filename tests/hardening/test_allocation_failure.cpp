@@ -8,12 +8,17 @@
 #include <cstddef>
 #include <cstdlib>
 #include <new>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <utility>
 
 #include <pointmass/particle_system.hpp>
 
 namespace {
 bool fail_aligned_allocations = false;
 std::size_t allocations = 0;  // every operator new, plain and aligned
+std::size_t aligned_allocations = 0;  // the aligned ones: the particle block's
 }  // namespace
 
 void* operator new(std::size_t size) {
@@ -26,6 +31,7 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 void* operator new(std::size_t size, std::align_val_t alignment) {
   ++allocations;
+  ++aligned_allocations;
   if (fail_aligned_allocations) throw std::bad_alloc();
   const auto a = static_cast<std::size_t>(alignment);
   if (void* p = std::aligned_alloc(a, (size + a - 1) / a * a)) return p;
@@ -54,6 +60,45 @@ TEST_CASE("a growth that fails to allocate changes nothing, handles included") {
   // And it grows when memory is there again.
   system.spawn({99.0f, 0.0f, 0.0f}, {});
   CHECK(system.size() == 17);
+}
+
+TEST_CASE("spawn_burst: the largest count it allows goes to the allocator, one more is refused") {
+  // max_size() - size() more particles is within the limit: the burst asks for a larger
+  // block (here refused: std::bad_alloc); one more is past it (std::length_error, before the
+  // block is asked for). Neither calls the generator or changes the system.
+  using Sparks = pointmass::ParticleSystem<float>;
+  Sparks system;
+  for (int i = 0; i < 3; ++i) system.spawn({float(i), 0.0f, 0.0f}, {});
+  const std::size_t room = Sparks::max_size() - system.size();
+  std::size_t generated = 0;
+  const auto generator = [&](std::size_t) {
+    ++generated;
+    return std::tuple{pointmass::Vector3<float>{}, pointmass::Vector3<float>{}};
+  };
+  // What a burst of `count` throws, and how many blocks it asked for.
+  const auto burst = [&](std::size_t count) {
+    const std::size_t before = aligned_allocations;
+    std::string thrown = "nothing";
+    try {
+      (void)system.spawn_burst(count, generator);
+    } catch (const std::bad_alloc&) {
+      thrown = "bad_alloc";
+    } catch (const std::length_error&) {
+      thrown = "length_error";
+    }
+    return std::pair{thrown, aligned_allocations - before};
+  };
+  fail_aligned_allocations = true;
+  const auto [within, within_allocations] = burst(room);
+  const auto [beyond, beyond_allocations] = burst(room + 1);
+  fail_aligned_allocations = false;
+  CHECK(within == "bad_alloc");
+  CHECK(within_allocations == 1);
+  CHECK(beyond == "length_error");
+  CHECK(beyond_allocations == 0);
+  CHECK(generated == 0);
+  CHECK(system.size() == 3);
+  CHECK(system.position(2).x == 2.0f);
 }
 
 namespace {

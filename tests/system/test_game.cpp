@@ -440,6 +440,45 @@ TEST_CASE_TEMPLATE("interpolation: alpha 0 is the previous position, 1 the curre
   CHECK(same_bits(interpolate(a, b, R(1)), b));
 }
 
+TEST_CASE_TEMPLATE("interpolation: alpha is the fraction of the way from the previous position "
+                   "to the current one", R, float, double) {
+  // Every number here is exact in binary, so the expected positions are exact: a step of
+  // 0.25 s at (4, -8, 2) m/s moves (1, -2, 0.5) m, and a quarter and three quarters of that
+  // are exact too. (Alpha 0, 0.5 and 1 cannot tell the two ends apart: a formula with the
+  // ends swapped gives the same points there.)
+  using Drawn = ParticleSystem<R, damping::None, position::Euler, features::Interpolation>;
+  Drawn system;
+  system.spawn({R(0), R(8), R(-4)}, {R(4), R(-8), R(2)});
+  system.spawn({R(1), R(1), R(1)}, {});  // at rest: every alpha gives where it is
+  system.step(R(0.25));
+  REQUIRE(system.previous_position(0) == Vector3<R>{R(0), R(8), R(-4)});
+  REQUIRE(system.position(0) == Vector3<R>{R(1), R(6), R(-3.5)});
+  const Vector3<R> quarter{R(0.25), R(7.5), R(-3.875)};
+  const Vector3<R> three_quarters{R(0.75), R(6.5), R(-3.625)};
+  const Vector3<R> rest{R(1), R(1), R(1)};
+  for (const auto& [alpha, expected] : {std::pair{R(0.25), quarter},
+                                        std::pair{R(0.75), three_quarters}}) {
+    CAPTURE(alpha);
+    CHECK(system.interpolated_position(0, alpha) == expected);
+    CHECK(system.interpolated_position(1, alpha) == rest);
+    std::vector<R> packed(6), strided(7, R(-7));
+    system.copy_interpolated_positions(alpha, std::span<R>(packed));
+    CHECK(Vector3<R>{packed[0], packed[1], packed[2]} == expected);
+    CHECK(Vector3<R>{packed[3], packed[4], packed[5]} == rest);
+    system.copy_interpolated_positions(alpha, std::span<R>(strided), 4);
+    CHECK(Vector3<R>{strided[0], strided[1], strided[2]} == expected);
+    CHECK(strided[3] == R(-7));
+    CHECK(Vector3<R>{strided[4], strided[5], strided[6]} == rest);
+    std::vector<Vector3<R>> vectors(2);
+    system.copy_interpolated_positions(alpha, std::span<Vector3<R>>(vectors));
+    CHECK(vectors[0] == expected);
+    CHECK(vectors[1] == rest);
+    // The free interpolate, for a lone Particle's loop.
+    CHECK(interpolate(Vector3<R>{R(0), R(8), R(-4)}, Vector3<R>{R(1), R(6), R(-3.5)}, alpha) ==
+          expected);
+  }
+}
+
 TEST_CASE("copy_positions: packed, strided and into vectors with x, y, z") {
   ParticleSystem<double> system;
   for (int n = 0; n < 10; ++n) system.spawn({double(n), n + 0.5, -n - 0.25}, {});
