@@ -142,11 +142,12 @@ TEST_CASE_TEMPLATE("closed form just over critical damping: each part of the sta
     for (const double t : {1e-3, 1e-2, 0.1, 1.0}) {
       CAPTURE(excess);
       CAPTURE(t);
-      const long double g = gamma;
+      const auto g = static_cast<long double>(gamma);
+      const auto time = static_cast<long double>(t);
       const long double lambda = std::sqrt((g - 1.0L) * (g + 1.0L));
-      REQUIRE(lambda * t < 0.5L);  // the region this test is for
-      const long double es = std::exp(-g * t) * std::sinh(lambda * t) / lambda;
-      const long double ec = std::exp(-g * t) * std::cosh(lambda * t);
+      REQUIRE(lambda * time < 0.5L);  // the region this test is for
+      const long double es = std::exp(-g * time) * std::sinh(lambda * time) / lambda;
+      const long double ec = std::exp(-g * time) * std::cosh(lambda * time);
       const auto s = forces::damped_oscillator<R>(R(1), gamma, {R(1), R(0), R(0)}, {}, R(t));
       INFO("v = ", s.velocity.x, ", expected ", double(-es));
       CHECK(close(s.velocity.x, R(-es), R(16), R(0)));

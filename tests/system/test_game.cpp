@@ -456,8 +456,9 @@ TEST_CASE_TEMPLATE("interpolation: alpha is the fraction of the way from the pre
   const Vector3<R> quarter{R(0.25), R(7.5), R(-3.875)};
   const Vector3<R> three_quarters{R(0.75), R(6.5), R(-3.625)};
   const Vector3<R> rest{R(1), R(1), R(1)};
-  for (const auto& [alpha, expected] : {std::pair{R(0.25), quarter},
-                                        std::pair{R(0.75), three_quarters}}) {
+  for (const auto& point : {std::pair{R(0.25), quarter}, std::pair{R(0.75), three_quarters}}) {
+    const R alpha = point.first;
+    const Vector3<R> expected = point.second;
     CAPTURE(alpha);
     CHECK(system.interpolated_position(0, alpha) == expected);
     CHECK(system.interpolated_position(1, alpha) == rest);
