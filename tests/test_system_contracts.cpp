@@ -407,6 +407,17 @@ TEST_CASE("FixedStep and the trajectory queries report bad arguments and keep th
   CHECK(invalid_argument_of([&] { (void)clock.advance(-1.0); })
             .find("advance: argument 'frame_time' = -1") != std::string::npos);
   CHECK(clock.accumulated() == 1.0 / 128);
+  // With a handler that returns, a rejected frame takes no step and draws where the clock
+  // stands: half way to the next step.
+  static int reported = 0;
+  reported = 0;
+  const auto previous = set_contract_handler([](const ContractViolation&) { ++reported; });
+  const FixedStep<double>::Frame rejected = clock.advance(std::numeric_limits<double>::quiet_NaN());
+  set_contract_handler(previous);
+  CHECK(reported == 1);
+  CHECK(rejected.steps == 0);
+  CHECK(rejected.alpha == 0.5);
+  CHECK(clock.accumulated() == 1.0 / 128);
 
   Particle<double, damping::Exact, position::Exact> shell;
   shell.set_velocity({0, 10, 0});

@@ -112,6 +112,23 @@ TEST_CASE_TEMPLATE("springs and drag far from the origin: finite, and zero when 
   CHECK(close(f[1], Vector3<R>{R(20), R(0), R(0)}, R(4)));
 }
 
+#if POINTMASS_CHECKS
+TEST_CASE_TEMPLATE("apply: a force beyond the range on the last body is reported, and no body "
+                   "gets a force", R, float, double) {
+  // Drag of 4 |v| on three bodies: 4 N on the first two, beyond the largest R on the last.
+  const R max = std::numeric_limits<R>::max();
+  const std::array<Vector3<R>, 3> positions{};
+  const std::array<Vector3<R>, 3> velocities{{{R(1), R(0), R(0)}, {R(1), R(0), R(0)},
+                                              {max / R(2), R(0), R(0)}}};
+  std::array<Vector3<R>, 3> f{};
+  forces::SpanBodies<R> bodies{positions, velocities, {}, f};
+  const std::string message =
+      violation_message([&] { forces::apply(forces::Drag<R>(R(4), R(0)), bodies, R(0.01)); });
+  CHECK(message.find("forces::apply: argument 'force' = (-inf, ") != std::string::npos);
+  CHECK(f == std::array<Vector3<R>, 3>{});
+}
+#endif
+
 TEST_CASE_TEMPLATE("gravity beyond the range is reported, buoyancy with a huge depth is right", R,
                    float, double) {
   // m g overflows for m = max / 4 (float: 8.5e37, accepted by set_mass): reported, not added.

@@ -292,6 +292,17 @@ TEST_CASE_TEMPLATE("spans view the live particles and write through", R, float, 
   system.template column<Column::inverse_mass>()[1] = R(0);  // immovable from now on
   system.step(R(0.5));
   CHECK(system.position(1).x == R(6));
+  // Read through a const system, each span is its own column.
+  ParticleSystem<R> drawn;
+  drawn.spawn({R(1), R(2), R(3)}, {R(4), R(5), R(6)});
+  const auto& seen = drawn;
+  CHECK(seen.position_x()[0] == R(1));
+  CHECK(seen.position_y()[0] == R(2));
+  CHECK(seen.position_z()[0] == R(3));
+  CHECK(seen.velocity_x()[0] == R(4));
+  CHECK(seen.velocity_y()[0] == R(5));
+  CHECK(seen.velocity_z()[0] == R(6));
+  CHECK(seen.velocity_z().size() == 1);
 }
 
 TEST_CASE_TEMPLATE("per-particle damping states live in columns of R that move together", R,

@@ -289,6 +289,19 @@ TEST_CASE("handles: a free slot answers for nothing, whichever copy issued the h
     CHECK(snapshot.find(snapshot.handle(i)) == std::optional<std::size_t>{i});
 }
 
+TEST_CASE("handles: a handle from a system with more slots answers for nothing") {
+  // `small`'s table is full (16 slots in a capacity of 16): slot 16, the first past its end,
+  // must be refused before it is read (AddressSanitizer reports the read otherwise).
+  using Named = ParticleSystem<float, damping::None, position::Euler, features::Handles>;
+  Named large, small(16);
+  for (int i = 0; i < 17; ++i) large.spawn({float(i), 0, 0}, {});
+  for (int i = 0; i < 16; ++i) small.spawn({float(i), 0, 0}, {});
+  REQUIRE(small.capacity() == 16);
+  const Named::Handle foreign = large.handle(16);
+  CHECK_FALSE(small.find(foreign).has_value());
+  CHECK_FALSE(small.contains(foreign));
+}
+
 TEST_CASE("handles: a slot's generation wraps by retiring the slot, old handles stay dead") {
   // 8-bit generations: a slot serves generations 0 .. 254, then is retired.
   using Small = ParticleSystem<float, damping::None, position::Euler,
