@@ -128,6 +128,16 @@ TEST_CASE("time_to_reach: the first time, against the closed form's root, never 
     REQUIRE(hit.has_value() == target.reached);
     if (!hit) continue;
     CHECK(std::abs(*hit - *ref) <= 1e-12 * *ref);
+    // Of the two adjacent times around the crossing, the one nearer the value: a neighbour on
+    // the other side of the value is no nearer.
+    const auto miss = [&](double t) {
+      return coordinate(position_at(launched<Exact>(s), t), target.axis) - target.value;
+    };
+    for (const double neighbour : {std::nextafter(*hit, 0.0), std::nextafter(*hit, 1e300)}) {
+      if ((miss(neighbour) < 0) != (miss(*hit) < 0)) {
+        CHECK(std::abs(miss(*hit)) <= std::abs(miss(neighbour)));
+      }
+    }
     // Odeint's position at that time is at the value, to 1e-12 of the distance flown.
     const auto at = reference::odeint_trajectory(model_of<damping::Exact>(s), s.start_position,
                                                  s.start_velocity, *hit, 1, 1e-14)[1];
