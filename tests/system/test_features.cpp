@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -254,6 +255,46 @@ TEST_CASE_TEMPLATE("lifetime in a large system: exactly the expired particles go
     CHECK(alive.front() == k);
     CHECK(std::adjacent_find(alive.begin(), alive.end()) == alive.end());  // no duplicates
   }
+}
+
+TEST_CASE_TEMPLATE("lifetime: the step on which the age equals the lifetime exactly removes the "
+                   "particle; a lifetime one ulp longer lives one step more",
+                   R, float, double) {
+  // 40 particles: 32 in whole vector blocks (the block scan), 8 in the rest (one at a time).
+  // Steps of 1/64 s add up exactly, so after step 3 the age is 3/64 s to the last bit. Even
+  // indices live exactly 3/64 s, odd ones the next R above it; x names the particle.
+  constexpr std::size_t count = 40;
+  ParticleSystem<R, damping::None, position::Euler, features::Lifetime> system(count);
+  const R exact = R(3) / R(64);
+  const R longer = std::nextafter(exact, real_infinity<R>);
+  for (std::size_t n = 0; n < count; ++n) {
+    const std::size_t i = system.spawn({R(n), R(0), R(0)}, {});
+    system.set_lifetime(i, n % 2 == 0 ? exact : longer);
+  }
+  CHECK(system.expired(exact, exact));
+  CHECK_FALSE(system.expired(std::nextafter(exact, R(0)), exact));
+  CHECK_FALSE(system.expired(real_infinity<R>, real_infinity<R>));  // never, even overflowed
+  const auto alive = [&] {
+    std::vector<std::size_t> names;
+    for (std::size_t i = 0; i < system.size(); ++i) {
+      names.push_back(static_cast<std::size_t>(system.position(i).x));
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  system.step(R(1) / R(64));
+  system.step(R(1) / R(64));
+  CHECK(system.size() == count);
+  system.step(R(1) / R(64));
+  REQUIRE(system.size() == count / 2);
+  CHECK(system.age(0) == exact);
+  const std::vector<std::size_t> names = alive();
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    CAPTURE(k);
+    CHECK(names[k] == 2 * k + 1);  // every odd one, and only those
+  }
+  system.step(R(1) / R(64));
+  CHECK(system.empty());
 }
 
 // (That a step allocates nothing at all is counted by tests/hardening/test_allocation_failure.cpp,
