@@ -204,6 +204,19 @@ TEST_CASE_TEMPLATE("spawn, kill by index and by predicate: swap-remove", R, floa
   CHECK(system.position_x().size() == 2);
   system.clear();
   CHECK(system.empty());
+
+  // Every particle removed: after each removal the predicate is asked about the particle
+  // moved into the freed index, so each is asked once and none is left behind.
+  for (int i = 0; i < 7; ++i) system.spawn({R(i), R(0), R(0)}, {});
+  std::vector<int> asked;
+  const std::size_t all = system.kill_if([&](std::size_t i) {
+    asked.push_back(static_cast<int>(system.position(i).x));
+    return true;
+  });
+  CHECK(all == 7);
+  CHECK(system.empty());
+  std::sort(asked.begin(), asked.end());
+  CHECK(asked == std::vector<int>{0, 1, 2, 3, 4, 5, 6});
   CHECK(system.capacity() == 8);
 }
 
