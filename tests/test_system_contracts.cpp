@@ -15,6 +15,7 @@
 #include <span>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -90,6 +91,54 @@ TEST_CASE("reserve refuses a capacity whose size arithmetic would overflow, and 
   CHECK(system.position(2) == before.position(2));
   // max_size() times the bytes of the stored arrays fits in a ptrdiff_t.
   CHECK(Sparks::max_size() <= std::size_t(PTRDIFF_MAX) / Sparks::storage_bytes_per_particle);
+}
+
+namespace {
+struct WideTag {};
+// a + b and a * b, or SIZE_MAX where the exact result would not fit.
+std::size_t saturated_add(std::size_t a, std::size_t b) {
+  return b > std::numeric_limits<std::size_t>::max() - a ? std::numeric_limits<std::size_t>::max()
+                                                          : a + b;
+}
+std::size_t saturated_multiply(std::size_t a, std::size_t b) {
+  return b != 0 && a > std::numeric_limits<std::size_t>::max() / b
+             ? std::numeric_limits<std::size_t>::max()
+             : a * b;
+}
+
+// A system and the layout of its arrays.
+template <class S, class D, class... Features>
+struct Sized {
+  using System = ParticleSystem<S, D, position::Euler, Features...>;
+  using Layout = detail::SystemLayout<S, D, Features...>;
+};
+}  // namespace
+
+TEST_CASE_TEMPLATE("at max_size() the block's bytes, every array rounded up to its pages and "
+                   "staggered, still fit in a ptrdiff_t",
+                   Case, Sized<float, damping::PerSecond>, Sized<double, damping::PerSecond>,
+                   Sized<Precision<float, Compensated<float>>, damping::PerSecond>,
+                   Sized<float, damping::PerSecond, features::Column<WideTag, std::array<double, 4>>>) {
+  // The sum the block's allocation makes (detail/soa_block.hpp), at the largest capacity
+  // reserve accepts, for every array, the user's columns and their element sizes included.
+  using System = typename Case::System;
+  using Layout = typename Case::Layout;
+  using Block = detail::SoaBlock<Layout>;
+  static_assert(std::is_same_v<typename System::Arrays, typename Layout::Arrays>);
+  const std::size_t capacity = System::max_size();
+  typename Layout::Arrays arrays{};
+  std::size_t total = 0;
+  std::size_t arrays_seen = 0;
+  Layout::for_each_array(arrays, [&](auto* array) {
+    const std::size_t bytes = saturated_multiply(capacity, sizeof(*array));
+    const std::size_t pages = saturated_add(bytes, Block::page - 1) / Block::page * Block::page;
+    total = saturated_add(total, saturated_add(pages, Block::stagger));
+    ++arrays_seen;
+  });
+  CAPTURE(capacity);
+  CAPTURE(total);
+  CHECK(arrays_seen == System::array_count);
+  CHECK(total <= std::size_t(PTRDIFF_MAX));
 }
 
 TEST_CASE("a copy's arrays() has the copy's size, so a step_particle loop over it steps all") {
@@ -358,19 +407,25 @@ TEST_CASE("the game features' arguments: removals in an expiry callback, buffers
             .find("copy_positions: argument 'out' = 5 must be a buffer of at least") !=
         std::string::npos);
   CHECK(buffer == std::vector<float>(5, -1.0f));
-  // Alpha outside [0, 1] (or NaN).
+  // Alpha outside [0, 1] (or NaN), for the packed buffer and for a buffer of Vector3.
+  std::vector<Vector3<float>> vectors(2, Vector3<float>{-1.0f, -1.0f, -1.0f});
   for (const float alpha : {-0.5f, 1.5f, std::numeric_limits<float>::quiet_NaN()}) {
+    CAPTURE(alpha);
     CHECK(invalid_argument_of([&] { (void)system.interpolated_position(0, alpha); })
               .find("interpolated_position: argument 'alpha'") != std::string::npos);
     CHECK(invalid_argument_of([&] {
             system.copy_interpolated_positions(alpha, std::span<float>(buffer));
           }).find("must be in [0, 1]") != std::string::npos);
+    CHECK(invalid_argument_of([&] {
+            system.copy_interpolated_positions(alpha, std::span<Vector3<float>>(vectors));
+          }).find("copy_interpolated_positions: argument 'alpha'") != std::string::npos);
     // The free interpolate, for a lone Particle's loop, checks it the same way.
     CHECK(invalid_argument_of([&] {
             (void)interpolate(Vector3<float>{1, 2, 3}, Vector3<float>{3, 4, 5}, alpha);
           }).find("interpolate: argument 'alpha'") != std::string::npos);
   }
   CHECK(buffer == std::vector<float>(5, -1.0f));
+  CHECK(vectors == std::vector<Vector3<float>>(2, Vector3<float>{-1.0f, -1.0f, -1.0f}));
   CHECK(invalid_argument_of([&] { (void)system.handle(7); }).find("handle: argument 'index' = 7") !=
         std::string::npos);
   CHECK(same_particles(system, before));
