@@ -382,6 +382,29 @@ TEST_CASE_TEMPLATE("per-particle damping states live in columns of R that move t
                                        features::PerParticleDamping>;
   CHECK(std::is_same_v<decltype(std::declval<ListingDamped&>().template column<Column::damping>()),
                        std::span<const R>>);
+  // Every column of a damping state is read-only where the state has it: ln d's lo part, and
+  // d^t kept for the last step length (PerSecond and AccelerateThenDamp), whose write would
+  // leave it stale against d; Exact keeps d and ln d as PerSecond does.
+  using ExactDamped = ParticleSystem<R, damping::Exact, position::Exact,
+                                     features::PerParticleDamping>;
+  CHECK(std::is_same_v<
+        decltype(std::declval<Damped&>().template column<Column::damping_log_lo>()),
+        std::span<const R>>);
+  CHECK(std::is_same_v<
+        decltype(std::declval<ExactDamped&>().template column<Column::damping_log_lo>()),
+        std::span<const R>>);
+  CHECK(std::is_same_v<
+        decltype(std::declval<ExactDamped&>().template column<Column::damping_log_hi>()),
+        std::span<const R>>);
+  CHECK(std::is_same_v<
+        decltype(std::declval<ExactDamped&>().template column<Column::damping>()),
+        std::span<const R>>);
+  CHECK(std::is_same_v<
+        decltype(std::declval<Damped&>().template column<Column::damping_retention>()),
+        std::span<const R>>);
+  CHECK(std::is_same_v<
+        decltype(std::declval<ListingDamped&>().template column<Column::damping_retention>()),
+        std::span<const R>>);
 
   Damped system(8);
   const R values[] = {R(0.25), R(0.5), R(0.99), R(0)};
