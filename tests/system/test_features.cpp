@@ -271,7 +271,7 @@ TEST_CASE_TEMPLATE("lifetime in a large system: exactly the expired particles go
 }
 
 TEST_CASE_TEMPLATE("lifetime: the step on which the age equals the lifetime exactly removes the "
-                   "particle; a lifetime one ulp longer lives one step more",
+                   "particle, and a lifetime one ulp longer lives one step more",
                    R, float, double) {
   // 40 particles: 32 in whole vector blocks (the block scan), 8 in the rest (one at a time).
   // Steps of 1/64 s add up exactly, so after step 3 the age is 3/64 s to the last bit. Even
