@@ -359,6 +359,11 @@ TEST_CASE_TEMPLATE("spans view the live particles and write through", R, float, 
   CHECK(seen.velocity_z().size() == 1);
 }
 
+/// True when System's column C is given read-only, as a span of const R.
+template <class System, Column C, class R>
+constexpr bool const_column =
+    std::is_same_v<decltype(std::declval<System&>().template column<C>()), std::span<const R>>;
+
 TEST_CASE_TEMPLATE("per-particle damping states live in columns of R that move together", R,
                    float, double) {
   // PerSecond and Exact: d, ln d's hi and lo, each a column of R (a step reads plain arrays),
@@ -367,11 +372,8 @@ TEST_CASE_TEMPLATE("per-particle damping states live in columns of R that move t
                                 features::PerParticleDamping>;
   using FrameDamped = ParticleSystem<R, damping::PerFrame, position::Euler,
                                      features::PerParticleDamping>;
-  static_assert(std::is_same_v<decltype(std::declval<Damped&>().template column<Column::damping>()),
-                               std::span<const R>>);
-  static_assert(
-      std::is_same_v<decltype(std::declval<Damped&>().template column<Column::damping_log_hi>()),
-                     std::span<const R>>);
+  static_assert(const_column<Damped, Column::damping, R>);
+  static_assert(const_column<Damped, Column::damping_log_hi, R>);
   static_assert(
       std::is_same_v<decltype(std::declval<FrameDamped&>().template column<Column::damping>()),
                      std::span<R>>);
@@ -380,31 +382,18 @@ TEST_CASE_TEMPLATE("per-particle damping states live in columns of R that move t
   // (a write through the column would leave the kept d^t stale); set_damping refreshes both.
   using ListingDamped = ParticleSystem<R, damping::AccelerateThenDamp, position::Euler,
                                        features::PerParticleDamping>;
-  CHECK(std::is_same_v<decltype(std::declval<ListingDamped&>().template column<Column::damping>()),
-                       std::span<const R>>);
+  CHECK(const_column<ListingDamped, Column::damping, R>);
   // Every column of a damping state is read-only where the state has it: ln d's lo part, and
   // d^t kept for the last step length (PerSecond and AccelerateThenDamp), whose write would
   // leave it stale against d; Exact keeps d and ln d as PerSecond does.
   using ExactDamped = ParticleSystem<R, damping::Exact, position::Exact,
                                      features::PerParticleDamping>;
-  CHECK(std::is_same_v<
-        decltype(std::declval<Damped&>().template column<Column::damping_log_lo>()),
-        std::span<const R>>);
-  CHECK(std::is_same_v<
-        decltype(std::declval<ExactDamped&>().template column<Column::damping_log_lo>()),
-        std::span<const R>>);
-  CHECK(std::is_same_v<
-        decltype(std::declval<ExactDamped&>().template column<Column::damping_log_hi>()),
-        std::span<const R>>);
-  CHECK(std::is_same_v<
-        decltype(std::declval<ExactDamped&>().template column<Column::damping>()),
-        std::span<const R>>);
-  CHECK(std::is_same_v<
-        decltype(std::declval<Damped&>().template column<Column::damping_retention>()),
-        std::span<const R>>);
-  CHECK(std::is_same_v<
-        decltype(std::declval<ListingDamped&>().template column<Column::damping_retention>()),
-        std::span<const R>>);
+  CHECK(const_column<Damped, Column::damping_log_lo, R>);
+  CHECK(const_column<Damped, Column::damping_retention, R>);
+  CHECK(const_column<ListingDamped, Column::damping_retention, R>);
+  CHECK(const_column<ExactDamped, Column::damping, R>);
+  CHECK(const_column<ExactDamped, Column::damping_log_hi, R>);
+  CHECK(const_column<ExactDamped, Column::damping_log_lo, R>);
 
   Damped system(8);
   const R values[] = {R(0.25), R(0.5), R(0.99), R(0)};
