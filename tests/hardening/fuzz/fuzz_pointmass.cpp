@@ -405,7 +405,11 @@ void fuzz_particle(Input& in) {
 // std::vector of the equivalent Particles, killed by the documented swap-remove, aged and
 // expired by the documented rule (age >= lifetime, and an infinite lifetime never expires).
 // After every operation the system agrees with the mirror bit for bit: positions,
-// velocities, accelerations, inverse masses, forces, damping, ages, lifetimes. The one
+// velocities, accelerations, inverse masses, forces, damping, ages, lifetimes, and with
+// features::Interpolation the previous positions (the stored position before the particle's
+// last step, or as spawned or set since), which interpolated_position gives at alpha 0, as
+// it gives the position at alpha 1. A damping set between two steps of one length takes
+// effect on the second (the system keeps d^t from step to step). The one
 // documented exception (docs/numerics.md, "Determinism"): a Particle adds its zero force to
 // its acceleration, turning a -0 acceleration component into +0, so once an input gives a
 // configuration without ForceAccumulator a -0 acceleration, zeros are compared by value.
@@ -571,9 +575,14 @@ class Mirror {
   using R = typename System::real;
   using Body = typename System::particle_type;
 
+  using E = typename System::position_element;
+
   std::vector<Body> bodies;
   std::vector<R> ages;
   std::vector<R> lifetimes;
+  // features::Interpolation: each particle's stored position before its last step, or as
+  // spawned or set since (a jump, not a motion to draw).
+  std::vector<Vector3<E>> previous;
   Vector3<R> acceleration{};
   R damping = R(1);
   bool zero_signs_may_differ = false;  // a -0 acceleration without ForceAccumulator
@@ -584,6 +593,12 @@ class Mirror {
     bodies.push_back(body);
     ages.push_back(R(0));
     lifetimes.push_back(std::numeric_limits<R>::infinity());
+    previous.push_back(body.stored_position());
+  }
+  template <class Position>
+  void set_position(std::size_t i, const Vector3<Position>& p) {
+    bodies[i].set_position(p);
+    previous[i] = bodies[i].stored_position();
   }
   template <class Position>
   void spawn(const Vector3<Position>& p, const Vector3<R>& v) {
@@ -598,9 +613,11 @@ class Mirror {
     bodies[i] = bodies.back();
     ages[i] = ages.back();
     lifetimes[i] = lifetimes.back();
+    previous[i] = previous.back();
     bodies.pop_back();
     ages.pop_back();
     lifetimes.pop_back();
+    previous.pop_back();
   }
   void note_acceleration(const Vector3<R>& a) {
     if constexpr (!System::has_forces) {
@@ -609,6 +626,7 @@ class Mirror {
     }
   }
   void integrate(std::size_t i, R t) {
+    previous[i] = bodies[i].stored_position();
     bodies[i].integrate(t);
     ages[i] += t;
   }
@@ -644,6 +662,7 @@ std::size_t immortals(const System& system) {  // particles whose lifetime is in
 
 template <class System>
 void compare(const System& system, const Mirror<System>& mirror, const Budget& budget) {
+  using R = typename System::real;
   require(system.size() == mirror.size(), "system and mirror differ in size");
   require(system.arrays().size == system.size(), "arrays().size differs from size()");
   require(system.capacity() >= system.size(), "capacity below size");
@@ -682,6 +701,17 @@ void compare(const System& system, const Mirror<System>& mirror, const Budget& b
       require(identical(system.lifetime(i), mirror.lifetimes[i]), "lifetime differs");
     }
     require(identical(system.damping(i), body.damping()), "damping differs");
+    if constexpr (System::has_interpolation) {
+      const auto before = system.previous_position(i);
+      require(agree(before, mirror.previous[i]), "previous position differs");
+      // alpha 0 and 1: the previous and the current position columns, bit for bit
+      require(identical(system.interpolated_position(i, R(0)), before),
+              "interpolated_position at alpha 0 is not the previous position");
+      if constexpr (!compensated_positions<System>) {
+        require(identical(system.interpolated_position(i, R(1)), p),
+                "interpolated_position at alpha 1 is not the position");
+      }
+    }
     if (budget.finite_physics) {
       require(finite(system.position(i)) && finite(system.velocity(i)),
               "finite physics gave a non-finite system particle");
@@ -893,7 +923,7 @@ void fuzz_system(Input& in) {
           require(same_state(body, mirror.bodies[index]), "a refused position changed a Particle");
         } else {
           check_stored_position(system, index, p);
-          mirror.bodies[index].set_position(p);
+          mirror.set_position(index, p);
           budget.vector(p, position_bound<System>);
           if constexpr (!plain_positions<System>) {  // every position() is taken back
             const auto q = system.position(index);
