@@ -233,6 +233,28 @@ TEST_CASE("handles: live handles find their particle, dead ones nothing, after a
   CHECK_FALSE(system.find(Named::Handle{}).has_value());  // a default handle names nothing
 }
 
+TEST_CASE("handles: clear() kills every handle and frees every slot for the next spawns") {
+  using Named = ParticleSystem<float, damping::None, position::Euler, features::Handles>;
+  Named system;
+  std::vector<Named::Handle> cleared;
+  std::set<std::uint32_t> cleared_slots;
+  for (int i = 0; i < 6; ++i) {
+    cleared.push_back(system.spawn_handle(Vector3<float>{float(i), 0, 0}, Vector3<float>{}));
+    cleared_slots.insert(cleared.back().slot);
+  }
+  system.clear();
+  for (const auto& handle : cleared) CHECK_FALSE(system.contains(handle));
+  std::set<std::uint32_t> slots;
+  for (int i = 0; i < 6; ++i) {
+    const Named::Handle handle =
+        system.spawn_handle(Vector3<float>{float(10 + i), 0, 0}, Vector3<float>{});
+    slots.insert(handle.slot);
+    CHECK(system.find(handle) == std::optional<std::size_t>{std::size_t(i)});
+  }
+  CHECK(slots == cleared_slots);  // the freed slots again: the table does not grow
+  for (const auto& handle : cleared) CHECK_FALSE(system.contains(handle));  // a new generation
+}
+
 TEST_CASE("handles: a moved-from system starts a new table (no free slot it does not have)") {
   // The table's free list once survived a move while its slots did not: the moved-from
   // system's next spawn then took a freed slot number past the end of its empty table.

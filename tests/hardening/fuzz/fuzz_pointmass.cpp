@@ -57,6 +57,7 @@
 #include <string>
 #include <tuple>
 #include <type_traits>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -409,12 +410,17 @@ void fuzz_particle(Input& in) {
 // features::Interpolation the previous positions (the stored position before the particle's
 // last step, or as spawned or set since), which interpolated_position gives at alpha 0, as
 // it gives the position at alpha 1. A damping set between two steps of one length takes
-// effect on the second (the system keeps d^t from step to step). The one
+// effect on the second (the system keeps d^t from step to step). With features::Handles,
+// every handle taken at a spawn (the latest 256) finds its particle's index while it lives
+// and nothing once it has died, and handle(i) finds i; the user column (features::Column)
+// holds what spawn or set_column gave the particle, T{} otherwise, through swap-removes and
+// clear() (kill_if's mode 0xFF). The one
 // documented exception (docs/numerics.md, "Determinism"): a Particle adds its zero force to
 // its acceleration, turning a -0 acceleration component into +0, so once an input gives a
 // configuration without ForceAccumulator a -0 acceleration, zeros are compared by value.
 //
-// The operations: spawn (a position and velocity, or copies of particles), kill, kill_if,
+// The operations: spawn (a position and velocity, with a user column's value or without,
+// or copies of particles), kill, kill_if, clear,
 // every setter with any value and any index (huge ones too), every accessor with any index
 // (an index >= size() is reported and changes nothing), step, the step_particle loop a
 // device runs, step_range and step_range_backward over any [begin, end) (a range outside
@@ -569,13 +575,19 @@ void check_stored_position(const System& system, std::size_t i,
     require(identical(system.position(i), p), "a position was not stored as given");
   }
 }
+// The user column of the systems with the game features (features::Column<FuzzOwner, int>).
+struct FuzzOwner {};
+template <class System>
+inline constexpr bool has_owner_column = System::template has_column<FuzzOwner>;
+
 template <class System>
 class Mirror {
  public:
   using R = typename System::real;
   using Body = typename System::particle_type;
-
   using E = typename System::position_element;
+  using Handle = typename System::Handle;
+  static constexpr std::size_t max_handles = 256;
 
   std::vector<Body> bodies;
   std::vector<R> ages;
@@ -583,17 +595,37 @@ class Mirror {
   // features::Interpolation: each particle's stored position before its last step, or as
   // spawned or set since (a jump, not a motion to draw).
   std::vector<Vector3<E>> previous;
+  // Each particle's serial number (never reused), and its value in the user column (T{} as
+  // spawned without one, and after spawn(particle)).
+  std::vector<std::uint64_t> serials;
+  std::vector<int> owners;
+  std::uint64_t next_serial = 0;
+  // features::Handles: handles taken at spawn (the latest max_handles), each with the serial
+  // of the particle it names: find() gives that particle's index while it lives, else nothing.
+  std::vector<std::pair<Handle, std::uint64_t>> handles;
+  std::size_t handles_taken = 0;
   Vector3<R> acceleration{};
   R damping = R(1);
   bool zero_signs_may_differ = false;  // a -0 acceleration without ForceAccumulator
 
   std::size_t size() const { return bodies.size(); }
 
-  void push(const Body& body) {
+  void push(const Body& body, int owner = 0) {
     bodies.push_back(body);
     ages.push_back(R(0));
     lifetimes.push_back(std::numeric_limits<R>::infinity());
     previous.push_back(body.stored_position());
+    serials.push_back(next_serial++);
+    owners.push_back(owner);
+  }
+  /// A user-column value for the particle with this serial (one per serial, so that a
+  /// swap-remove moving the wrong value shows).
+  static int owner_for(std::uint64_t serial) { return static_cast<int>(serial % 100003) + 1; }
+  void track(const Handle& handle, std::size_t i) {
+    const std::pair<Handle, std::uint64_t> entry{handle, serials[i]};
+    if (handles.size() < max_handles) handles.push_back(entry);
+    else handles[handles_taken % max_handles] = entry;
+    ++handles_taken;
   }
   template <class Position>
   void set_position(std::size_t i, const Vector3<Position>& p) {
@@ -601,23 +633,27 @@ class Mirror {
     previous[i] = bodies[i].stored_position();
   }
   template <class Position>
-  void spawn(const Vector3<Position>& p, const Vector3<R>& v) {
+  void spawn(const Vector3<Position>& p, const Vector3<R>& v, int owner = 0) {
     Body body;
     body.set_position(p);
     body.set_velocity(v);
     if constexpr (!System::per_particle_acceleration) body.set_acceleration(acceleration);
     if constexpr (System::stores_damping && !System::per_particle_damping) body.set_damping(damping);
-    push(body);
+    push(body, owner);
   }
   void kill(std::size_t i) {  // swap-remove
     bodies[i] = bodies.back();
     ages[i] = ages.back();
     lifetimes[i] = lifetimes.back();
     previous[i] = previous.back();
+    serials[i] = serials.back();
+    owners[i] = owners.back();
     bodies.pop_back();
     ages.pop_back();
     lifetimes.pop_back();
     previous.pop_back();
+    serials.pop_back();
+    owners.pop_back();
   }
   void note_acceleration(const Vector3<R>& a) {
     if constexpr (!System::has_forces) {
@@ -701,6 +737,13 @@ void compare(const System& system, const Mirror<System>& mirror, const Budget& b
       require(identical(system.lifetime(i), mirror.lifetimes[i]), "lifetime differs");
     }
     require(identical(system.damping(i), body.damping()), "damping differs");
+    if constexpr (has_owner_column<System>) {
+      require(system.template column<FuzzOwner>(i) == mirror.owners[i], "user column differs");
+    }
+    if constexpr (System::has_handles) {
+      const auto found = system.find(system.handle(i));
+      require(found.has_value() && *found == i, "a live particle's handle does not find it");
+    }
     if constexpr (System::has_interpolation) {
       const auto before = system.previous_position(i);
       require(agree(before, mirror.previous[i]), "previous position differs");
@@ -715,6 +758,21 @@ void compare(const System& system, const Mirror<System>& mirror, const Budget& b
     if (budget.finite_physics) {
       require(finite(system.position(i)) && finite(system.velocity(i)),
               "finite physics gave a non-finite system particle");
+    }
+  }
+  if constexpr (System::has_handles) {
+    // Every handle taken finds the particle it named while it lives, and nothing after.
+    std::unordered_map<std::uint64_t, std::size_t> index_of;
+    for (std::size_t i = 0; i < mirror.size(); ++i) index_of.emplace(mirror.serials[i], i);
+    for (const auto& [handle, serial] : mirror.handles) {
+      const auto found = system.find(handle);
+      const auto alive = index_of.find(serial);
+      if (alive == index_of.end()) {
+        require(!found.has_value() && !system.contains(handle), "a dead particle's handle finds one");
+      } else {
+        require(found.has_value() && *found == alive->second && system.contains(handle),
+                "a handle does not find its particle");
+      }
     }
   }
   expect_accepted("an accessor with a valid index");
@@ -887,7 +945,15 @@ void fuzz_system(Input& in) {
         const auto p = position_vector<System>(in);
         const auto v = in.vector<R>();
         if (system.size() >= max_particles) break;
-        const std::size_t i = system.spawn(p, v);
+        // code 1 gives the user column (if any) a value of its own; code 0 leaves it T{}
+        int owner = 0;
+        std::size_t i = 0;
+        if constexpr (has_owner_column<System>) {
+          if (code % 23 == 1) owner = Mirror<System>::owner_for(mirror.next_serial);
+          i = owner != 0 ? system.spawn(p, v, owner) : system.spawn(p, v);
+        } else {
+          i = system.spawn(p, v);
+        }
         if (!position_accepted<System>(p)) {
           expect_rejected("spawn", "position", p);
           require(i == System::npos, "rejected spawn returned an index");
@@ -898,7 +964,8 @@ void fuzz_system(Input& in) {
           expect_accepted("spawn");
           require(i == mirror.size(), "spawn index");
           check_stored_position(system, i, p);
-          mirror.spawn(p, v);
+          mirror.spawn(p, v, owner);
+          if constexpr (System::has_handles) mirror.track(system.handle(i), i);
           budget.vector(p, position_bound<System>);
           budget.vector(v);
         }
@@ -1145,6 +1212,13 @@ void fuzz_system(Input& in) {
       }
       case 14: {  // kill_if: the particles whose state is doomed, in swap-remove order
         const std::uint8_t mode = in.byte();
+        if (mode == 0xFF) {  // mode % 8 == 7 removes all: here clear() does, keeping the capacity
+          const std::size_t capacity = system.capacity();
+          system.clear();
+          require(system.size() == 0 && system.capacity() == capacity, "clear");
+          while (mirror.size() != 0) mirror.kill(mirror.size() - 1);
+          break;
+        }
         const std::size_t before = system.size();
         std::size_t asked = 0;
         const std::size_t removed = system.kill_if([&](std::size_t i) {
@@ -1244,6 +1318,20 @@ void fuzz_system(Input& in) {
           read("age", system.age(index));
           read("lifetime", system.lifetime(index));
         }
+        if constexpr (System::has_interpolation) {
+          read("previous_position", system.previous_position(index));
+          read("interpolated_position", system.interpolated_position(index, R(0)));
+        }
+        if constexpr (System::has_handles) read("handle", system.handle(index));
+        if constexpr (has_owner_column<System>) {
+          read("column", system.template column<FuzzOwner>(index));
+          if ((code / 23) % 2 == 1) {  // and a value of the user column set (no input read)
+            const int owner = -(op + 1);
+            system.template set_column<FuzzOwner>(index, owner);
+            if (valid_index) mirror.owners[index] = owner;
+            read("set_column", 0);
+          }
+        }
         break;
       }
       case 19: {  // step_range and step_range_backward over any ranges, then finish_step
@@ -1317,6 +1405,7 @@ void fuzz_system(Input& in) {
           } else {
             require(i == mirror.size(), "spawn(particle) index");
             mirror.push(body);
+            if constexpr (System::has_handles) mirror.track(system.handle(i), i);
           }
         }
         break;
@@ -1678,7 +1767,6 @@ using MoreSystemConfigs = std::tuple<
 
 // The game features (previous positions, handles, a user column): no physics of their own,
 // so every invariant above holds with them; after the others, as above.
-struct FuzzOwner {};
 template <class R>
 using GameSystemConfigs = std::tuple<
     SystemConfig<ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
