@@ -6,7 +6,8 @@
 POINTMASS_PACKAGES=(cmake ninja-build g++ clang libclang-rt-14-dev libboost-dev doctest-dev
                     libbenchmark-dev libtbb-dev gnuplot-nox doxygen pkg-config
                     libglm-dev libeigen3-dev  # test-only (tests/packaging/user_vectors)
-                    libtrilinos-kokkos-dev)  # pointmass::kokkos and tests/kokkos (Serial backend)
+                    libtrilinos-kokkos-dev  # pointmass::kokkos and tests/kokkos (Serial backend)
+                    g++-multilib)  # scripts/test.sh i386: g++ -m32
 
 # Installs those of the named Debian packages that are missing (apt-get update first, once).
 ensure_packages() {

@@ -12,14 +12,17 @@
 # optimised as when they measure; the plain replay of the fuzzing inputs runs in the g++
 # configuration only (clang's libFuzzer run replays them through clang's code, sanitized), and
 # so does the batch suite's build without exceptions (clang builds the rest of that suite).
+# The i386 configuration builds the behaviour tests and the fuzzing replay for 32-bit x86
+# (g++ -m32 with SSE2 arithmetic): a 32-bit size_t in every size, index and handle, and the
+# same bits as on x86-64 (docs/numerics.md, "Determinism").
 #   scripts/test.sh            everything
-#   scripts/test.sh gcc        one configuration: gcc, clang or sanitize
+#   scripts/test.sh gcc        one configuration: gcc, clang, sanitize or i386
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 ensure_packages "${POINTMASS_PACKAGES[@]}"
 
 configurations=("$@")
-((${#configurations[@]})) || configurations=(gcc clang sanitize)
+((${#configurations[@]})) || configurations=(gcc clang sanitize i386)
 
 for configuration in "${configurations[@]}"; do
   dir="$POINTMASS_ROOT/build/test-$configuration"
@@ -42,7 +45,13 @@ for configuration in "${configurations[@]}"; do
         -DPOINTMASS_FUZZ_REPLAY=OFF \
         "-DCMAKE_CXX_FLAGS=-fno-omit-frame-pointer -fsanitize=address,undefined,float-divide-by-zero -fno-sanitize-recover=all"
       ;;
-    *) echo "unknown configuration: $configuration (gcc, clang, sanitize)" >&2; exit 2 ;;
+    i386)
+      configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=Debug \
+        -DCMAKE_CXX_FLAGS_DEBUG=-g1 -DPOINTMASS_BUILD_BENCHMARKS=OFF \
+        -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_CHECKS=OFF \
+        "-DCMAKE_CXX_FLAGS=-m32 -msse2 -mfpmath=sse" -DCMAKE_EXE_LINKER_FLAGS=-m32
+      ;;
+    *) echo "unknown configuration: $configuration (gcc, clang, sanitize, i386)" >&2; exit 2 ;;
   esac
   echo "== $configuration: test"
   ctest --test-dir "$dir" --output-on-failure --parallel "$(nproc)"

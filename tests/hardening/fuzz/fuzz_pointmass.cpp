@@ -783,8 +783,9 @@ std::size_t pick_index(Input& in, std::size_t size) {
   std::size_t index = in.byte();
   if (index >= 248) {
     constexpr std::size_t max = std::numeric_limits<std::size_t>::max();
+    constexpr std::size_t half_width = std::size_t{1} << (std::numeric_limits<std::size_t>::digits / 2);
     const std::size_t special[] = {size, size + 1, max, max - 1, max / 2 + 1,
-                                   std::size_t{1} << 32, size + 64, 255};
+                                   half_width, size + 64, 255};
     index = special[index - 248];
   } else if (index < 200 && size != 0) {
     index %= size;
