@@ -71,12 +71,21 @@ OracleState oracle_step(const OracleState& s, const long double (&a)[3], long do
     else if constexpr (std::is_same_v<P, position::SemiImplicit>) p1 = s.p[i] + v1 * t;
     else if constexpr (std::is_same_v<P, position::Exact>) {
       // p1 = p0 + v0 t phi1(x) + a t^2 phi2(x), x = k t, phi1 = (e^x - 1) / x,
-      // phi2 = (e^x - 1 - x) / x^2; a short Taylor series where x is tiny (no cancellation).
+      // phi2 = (e^x - 1 - x) / x^2; their Taylor series where x is tiny (no cancellation),
+      // summed until the terms no longer change the sums: a fixed number of terms would hold
+      // for one long double (x87's 64 bits) and fall short of another (a 113-bit quad).
       const long double x = std::is_same_v<D, damping::None> || d == 1 ? 0.0L : k * t;
       long double phi1 = 1, phi2 = 0.5L;
       if (std::fabs(x) < 1e-3L) {
-        phi1 = 1 + x / 2 + x * x / 6 + x * x * x / 24 + x * x * x * x / 120;
-        phi2 = 0.5L + x / 6 + x * x / 24 + x * x * x / 120 + x * x * x * x / 720;
+        phi1 = 0;
+        phi2 = 0;
+        long double term1 = 1, term2 = 0.5L;  // x^n / (n + 1)! and x^n / (n + 2)!
+        for (int n = 0; n < 64 && (phi1 + term1 != phi1 || phi2 + term2 != phi2); ++n) {
+          phi1 += term1;
+          phi2 += term2;
+          term1 *= x / static_cast<long double>(n + 2);
+          term2 *= x / static_cast<long double>(n + 3);
+        }
       } else if (std::isinf(x)) {
         phi1 = 0;
         phi2 = 0;
