@@ -27,6 +27,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 #if defined(__cpp_exceptions) || defined(__EXCEPTIONS)
@@ -91,6 +92,15 @@
 
 namespace pointmass {
 
+/// Room for ContractViolation::text at its longest, three long doubles: each with a sign, a
+/// point, max_digits10 digits and an exponent of up to five digits (21 digits for x87's 64-bit
+/// long double, 36 for a 113-bit quad), "(", two ", ", ")" and the terminating zero; 128 at
+/// least.
+inline constexpr std::size_t contract_text_size =
+    3 * (std::numeric_limits<long double>::max_digits10 + 9) + 6 > 128
+        ? 3 * (std::numeric_limits<long double>::max_digits10 + 9) + 6
+        : 128;
+
 /// What a failed check reports: enough to write "integrate: duration = -0.1 must be >= 0".
 struct ContractViolation {
   const char* function;     ///< the public function whose precondition failed
@@ -98,7 +108,8 @@ struct ContractViolation {
   const char* requirement;  ///< what the argument must satisfy
   long double value[3];     ///< the offending value (a vector uses all three)
   int components;           ///< 1 for a number, 3 for a vector
-  char text[128];           ///< the value as written in its own precision: "-2.5", "(0, inf, 0)"
+  /// The value as written in its own precision: "-2.5", "(0, inf, 0)".
+  char text[contract_text_size];
   /// When the value is one of many a call takes (spawn_burst: the particle its generator
   /// returned for k), that call's name and the element's index; otherwise null and 0.
   const char* within = nullptr;
@@ -172,11 +183,11 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 // Appends x, in the shortest form that reads back as the same T, to text at *used.
 template <class T>
-void append_number(char (&text)[128], std::size_t& used, T x) {
+void append_number(char (&text)[contract_text_size], std::size_t& used, T x) {
   const auto result = std::to_chars(text + used, text + sizeof text - 1, x);
   used = static_cast<std::size_t>(result.ptr - text);
 }
-inline void append_text(char (&text)[128], std::size_t& used, const char* part) {
+inline void append_text(char (&text)[contract_text_size], std::size_t& used, const char* part) {
   while (*part != '\0' && used + 1 < sizeof text) text[used++] = *part++;
 }
 

@@ -9,12 +9,14 @@
 // render-relative positions exact; the precision pieces checked at compile time.
 #include <doctest/doctest.h>
 
+#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <optional>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -933,6 +935,36 @@ TEST_CASE("set_position on compensated positions: every position() the pair give
     CHECK(particle.position().x == mid);
     CHECK_THROWS_AS(particle.set_position({std::nextafter(mid, 1e4000L), 0.0L, 0.0L}),
                     std::invalid_argument);
+
+    // The report's text holds all three refused components, each reading back as itself,
+    // at long double's longest: 21 significant digits for x87's 64 bits, 36 for a 113-bit
+    // quad, where three of them need more than 128 characters.
+    const long double past = std::nextafter(mid, 1e4000L);
+    const long double refused[3] = {-past, past, -std::nextafter(past, 1e4000L)};
+    std::string message;
+    try {
+      particle.set_position({refused[0], refused[1], refused[2]});
+    } catch (const std::invalid_argument& error) {
+      message = error.what();
+    }
+    CAPTURE(message);
+    const std::size_t open = message.find("' = (");
+    const std::size_t close = message.find(") must be");
+    REQUIRE(open != std::string::npos);
+    REQUIRE(close != std::string::npos);
+    const char* first = message.data() + open + 5;
+    const char* const last = message.data() + close;
+    for (int k = 0; k < 3; ++k) {
+      CAPTURE(k);
+      long double read = 0.0L;
+      const auto [end, error] = std::from_chars(first, last, read);
+      REQUIRE(error == std::errc{});
+      CHECK(read == refused[k]);
+      const bool separated = k < 2 && last - end > 2 && end[0] == ',' && end[1] == ' ';
+      REQUIRE((end == last) != separated);
+      first = end + 2;
+    }
+    CHECK(particle.position().x == mid);  // unchanged
   }
 }
 
