@@ -1,10 +1,13 @@
 # SPDX-License-Identifier: BSL-1.0
 cmake_minimum_required(VERSION 3.21)
-# cmake -DPROGRAM=generator -DEXPECTED=doc.md -DOUTPUT=build/doc.md -P CheckGenerated.cmake
+# cmake -DPROGRAM=generator -DEXPECTED=doc.md -DOUTPUT=build/doc.md [-DEMULATOR=...]
+#       -P CheckGenerated.cmake
 # Runs PROGRAM, which writes a document to standard output, and fails unless the output is
 # EXPECTED byte for byte: a generated document in the source tree must be what its generator
-# writes now. On a difference it prints the lines that differ and how to regenerate.
-execute_process(COMMAND "${PROGRAM}" OUTPUT_FILE "${OUTPUT}" RESULT_VARIABLE _status)
+# writes now. On a difference it prints the lines that differ and how to regenerate. A cross
+# build passes its emulator's command line as EMULATOR, which runs PROGRAM.
+separate_arguments(_emulator UNIX_COMMAND "${EMULATOR}")
+execute_process(COMMAND ${_emulator} "${PROGRAM}" OUTPUT_FILE "${OUTPUT}" RESULT_VARIABLE _status)
 if(NOT _status EQUAL 0)
   message(FATAL_ERROR "${PROGRAM} failed: ${_status}")
 endif()

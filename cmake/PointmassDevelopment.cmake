@@ -22,3 +22,9 @@ find_package(Boost 1.74 REQUIRED)
 add_library(pointmass_support INTERFACE)
 target_include_directories(pointmass_support INTERFACE "${PROJECT_SOURCE_DIR}/tests/support")
 target_link_libraries(pointmass_support INTERFACE pointmass::pointmass Boost::headers)
+
+# A cross build runs its programs under CMAKE_CROSSCOMPILING_EMULATOR (qemu-user, say). CTest
+# adds it to a test whose command is a target; a script test (cmake -P) that runs a program
+# itself takes it as -DEMULATOR=${POINTMASS_EMULATOR}, one argument, and splits it again
+# (separate_arguments). Empty on a native build.
+string(REPLACE ";" " " POINTMASS_EMULATOR "${CMAKE_CROSSCOMPILING_EMULATOR}")

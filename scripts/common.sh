@@ -7,7 +7,9 @@ POINTMASS_PACKAGES=(cmake ninja-build g++ clang libclang-rt-14-dev libboost-dev 
                     libbenchmark-dev libtbb-dev gnuplot-nox doxygen pkg-config
                     libglm-dev libeigen3-dev  # test-only (tests/packaging/user_vectors)
                     libtrilinos-kokkos-dev  # pointmass::kokkos and tests/kokkos (Serial backend)
-                    g++-multilib)  # scripts/test.sh i386: g++ -m32
+                    g++-multilib  # scripts/test.sh i386: g++ -m32
+                    qemu-user binutils-aarch64-linux-gnu libc6-dev-arm64-cross  # ... aarch64
+                    libstdc++-12-dev-arm64-cross libgcc-12-dev-arm64-cross)
 
 # Installs those of the named Debian packages that are missing (apt-get update first, once).
 ensure_packages() {

@@ -3,11 +3,13 @@
 # Which builds reproduce the same trajectories: builds tests/hardening/determinism.cpp with each
 # compiler and set of flags below, runs it, and prints its digest over every trajectory and
 # whether the scalar and batch paths agreed bit for bit, as a Markdown table that it writes
-# into docs/numerics.md ("Determinism") between the determinism markers.
+# into docs/numerics.md ("Determinism") between the determinism markers. The 32-bit x86 build
+# runs natively; the 64-bit ARM one, cross-compiled by clang, under qemu-user.
 # Usage: scripts/determinism-report.sh
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-ensure_packages g++ clang
+ensure_packages g++ clang g++-multilib qemu-user binutils-aarch64-linux-gnu \
+  libc6-dev-arm64-cross libstdc++-12-dev-arm64-cross libgcc-12-dev-arm64-cross
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 variants=(
@@ -22,6 +24,8 @@ variants=(
   "clang++ -std=c++20 -O3 -march=native"
   "clang++ -std=c++20 -O3 -march=native -ffp-contract=off"
   "g++ -std=c++20 -O2 -ffast-math"
+  "g++ -m32 -msse2 -mfpmath=sse -std=c++20 -O2"
+  "clang++ --target=aarch64-linux-gnu -std=c++20 -O2 -ffp-contract=off"
 )
 fma="without FMA"
 grep -qw fma /proc/cpuinfo 2>/dev/null && fma="with FMA"
@@ -35,7 +39,9 @@ for variant in "${variants[@]}"; do
   # shellcheck disable=SC2086  # the variant is words
   $variant -I"$POINTMASS_ROOT/include" "$POINTMASS_ROOT/tests/hardening/determinism.cpp" \
     -o "$work/determinism"
-  output=$("$work/determinism" || true)
+  run=()
+  [[ $variant == *--target=aarch64* ]] && run=(qemu-aarch64 -L /usr/aarch64-linux-gnu)
+  output=$("${run[@]}" "$work/determinism" || true)
   digest=$(sed -n 's/^all //p' <<<"$output")
   configurations=$(grep -vc '^all \|^scalar and batch\|^MISMATCH' <<<"$output" || true)
   agree=$(grep -q "agree bit for bit" <<<"$output" && echo "agree" || echo "differ")
@@ -43,7 +49,8 @@ for variant in "${variants[@]}"; do
 done
 {
   echo "Command: \`scripts/determinism-report.sh\`, on an x86-64 CPU $fma (g++ $gxx, clang $clangxx,"
-  echo "glibc $glibc); \"digest\" is over all $configurations configurations."
+  echo "glibc $glibc; the \`--target=aarch64-linux-gnu\` build runs under qemu-user); \"digest\""
+  echo "is over all $configurations configurations."
   echo
   echo "| build | digest | scalar and batch |"
   echo "|---|---|---|"

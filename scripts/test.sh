@@ -14,15 +14,18 @@
 # so does the batch suite's build without exceptions (clang builds the rest of that suite).
 # The i386 configuration builds the behaviour tests and the fuzzing replay for 32-bit x86
 # (g++ -m32 with SSE2 arithmetic): a 32-bit size_t in every size, index and handle, and the
-# same bits as on x86-64 (docs/numerics.md, "Determinism").
+# same bits as on x86-64 (docs/numerics.md, "Determinism"). The aarch64 configuration builds
+# the same for 64-bit ARM with clang (cmake/toolchains/aarch64-linux-gnu-clang.cmake) and runs
+# it under qemu-user: another instruction set, FPCR's flush-to-zero for FlushDenormals, a
+# 113-bit long double, and again the same bits (contraction off, as the determinism rules say).
 #   scripts/test.sh            everything
-#   scripts/test.sh gcc        one configuration: gcc, clang, sanitize or i386
+#   scripts/test.sh gcc        one configuration: gcc, clang, sanitize, i386 or aarch64
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 ensure_packages "${POINTMASS_PACKAGES[@]}"
 
 configurations=("$@")
-((${#configurations[@]})) || configurations=(gcc clang sanitize i386)
+((${#configurations[@]})) || configurations=(gcc clang sanitize i386 aarch64)
 
 for configuration in "${configurations[@]}"; do
   dir="$POINTMASS_ROOT/build/test-$configuration"
@@ -51,7 +54,15 @@ for configuration in "${configurations[@]}"; do
         -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_CHECKS=OFF \
         "-DCMAKE_CXX_FLAGS=-m32 -msse2 -mfpmath=sse" -DCMAKE_EXE_LINKER_FLAGS=-m32
       ;;
-    *) echo "unknown configuration: $configuration (gcc, clang, sanitize, i386)" >&2; exit 2 ;;
+    aarch64)
+      configure_and_build "$dir" \
+        -DCMAKE_TOOLCHAIN_FILE="$POINTMASS_ROOT/cmake/toolchains/aarch64-linux-gnu-clang.cmake" \
+        -DCMAKE_BUILD_TYPE=Release -DPOINTMASS_BUILD_BENCHMARKS=OFF \
+        -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_CHECKS=OFF \
+        -DCMAKE_CXX_FLAGS=-ffp-contract=off
+      ;;
+    *) echo "unknown configuration: $configuration (gcc, clang, sanitize, i386, aarch64)" >&2
+       exit 2 ;;
   esac
   echo "== $configuration: test"
   ctest --test-dir "$dir" --output-on-failure --parallel "$(nproc)"

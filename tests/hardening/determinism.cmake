@@ -1,13 +1,15 @@
 # SPDX-License-Identifier: BSL-1.0
 # Compares the digests two runs of the determinism program print.
-#   cmake -DFIRST=<program> [-DSECOND=<program>] -P determinism.cmake
+#   cmake -DFIRST=<program> [-DSECOND=<program>] [-DEMULATOR=...] -P determinism.cmake
 # Runs FIRST, then SECOND (FIRST again if not given), and passes when both exit 0 and print
-# the same "all <digest>" line: run after run, or build against build.
+# the same "all <digest>" line: run after run, or build against build. A cross build passes
+# its emulator's command line as EMULATOR, which runs both.
 if(NOT DEFINED SECOND)
   set(SECOND "${FIRST}")
 endif()
+separate_arguments(emulator UNIX_COMMAND "${EMULATOR}")
 foreach(which IN ITEMS FIRST SECOND)
-  execute_process(COMMAND "${${which}}" RESULT_VARIABLE result OUTPUT_VARIABLE output)
+  execute_process(COMMAND ${emulator} "${${which}}" RESULT_VARIABLE result OUTPUT_VARIABLE output)
   if(NOT result EQUAL 0)
     message(FATAL_ERROR "${${which}} failed (${result}):\n${output}")
   endif()
