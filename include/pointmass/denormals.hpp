@@ -28,8 +28,9 @@
 // needs none: it runs every chunk under the modes of the thread that called it (and gives
 // each worker its own back after), so a guard around the call covers its workers, whatever
 // modes the pool's threads had. Supported with g++ and clang
-// on x86-64, and on 32-bit x86 with SSE (the MXCSR register); elsewhere `supported` is false
-// and the guard does nothing.
+// on x86-64 and on 32-bit x86 with SSE (the MXCSR register's FTZ and DAZ bits), and on 64-bit
+// ARM (the FPCR register's FZ bit, which flushes subnormal operands and results alike);
+// elsewhere `supported` is false and the guard does nothing.
 //
 // Owns: FlushDenormals, and detail::SameFlushModes (a chunk of a parallel step under the
 // calling thread's modes).
@@ -38,44 +39,64 @@
 
 #include "config.hpp"
 
+// Which register holds the modes: 1, x86's MXCSR; 2, AArch64's FPCR; 0, none known.
 #if (defined(__GNUC__) || defined(__clang__)) && \
     (defined(__x86_64__) || (defined(__i386__) && defined(__SSE__)))
-#define POINTMASS_DETAIL_MXCSR 1
+#define POINTMASS_DETAIL_FLUSH_REGISTER 1
+#elif (defined(__GNUC__) || defined(__clang__)) && defined(__aarch64__)
+#define POINTMASS_DETAIL_FLUSH_REGISTER 2
 #else
-#define POINTMASS_DETAIL_MXCSR 0
+#define POINTMASS_DETAIL_FLUSH_REGISTER 0
 #endif
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 namespace detail {
 
-/// The two modes in the x86 SSE control register (MXCSR): bit 15, flush to zero, and bit 6,
-/// denormals are zero. Where it does not exist, reads give 0 and writes do nothing.
+/// The flush modes in the floating-point control register: on x86, the SSE control register
+/// (MXCSR), bit 15, flush to zero, and bit 6, denormals are zero; on AArch64, the FPCR's bit
+/// 24 (FZ), which does both for single and double precision. Where neither exists, reads
+/// give 0 and writes do nothing.
 struct FlushModeBits {
+#if POINTMASS_DETAIL_FLUSH_REGISTER == 2
+  using Register = unsigned long long;  // FPCR is 64 bits wide
+  static constexpr unsigned flush_bits = 1u << 24;
+#else
+  using Register = unsigned;
   static constexpr unsigned flush_bits = (1u << 15) | (1u << 6);
+#endif
 
-  static unsigned read() noexcept {
-#if POINTMASS_DETAIL_MXCSR
-    unsigned csr = 0;
+  static Register read() noexcept {
+#if POINTMASS_DETAIL_FLUSH_REGISTER == 1
+    Register csr = 0;
     __asm__ __volatile__("stmxcsr %0" : "=m"(csr));
     return csr;
+#elif POINTMASS_DETAIL_FLUSH_REGISTER == 2
+    Register fpcr = 0;
+    __asm__ __volatile__("mrs %0, fpcr" : "=r"(fpcr));
+    return fpcr;
 #else
     return 0;
 #endif
   }
-  static void write(unsigned csr) noexcept {
-#if POINTMASS_DETAIL_MXCSR
+  static void write(Register value) noexcept {
     // "memory": no load or store of the guarded computation moves across the change.
-    __asm__ __volatile__("ldmxcsr %0" : : "m"(csr) : "memory");
+#if POINTMASS_DETAIL_FLUSH_REGISTER == 1
+    __asm__ __volatile__("ldmxcsr %0" : : "m"(value) : "memory");
+#elif POINTMASS_DETAIL_FLUSH_REGISTER == 2
+    __asm__ __volatile__("msr fpcr, %0" : : "r"(value) : "memory");
 #else
-    static_cast<void>(csr);
+    static_cast<void>(value);
 #endif
   }
-  /// The calling thread's two modes (their bits; 0 where unsupported).
-  static unsigned modes() noexcept { return read() & flush_bits; }
-  /// Sets the calling thread's two modes to `modes` (bits of flush_bits), keeping the rest of
-  /// the register: exception flags raised meanwhile, rounding and traps.
-  static void set_modes(unsigned modes) noexcept { write((read() & ~flush_bits) | modes); }
+  /// The calling thread's flush modes (their bits; 0 where unsupported).
+  static unsigned modes() noexcept { return static_cast<unsigned>(read() & flush_bits); }
+  /// Sets the calling thread's flush modes to `modes` (bits of flush_bits), keeping the rest
+  /// of the register: rounding and traps (the exception flags, in MXCSR or in AArch64's
+  /// separate FPSR, stay as they are).
+  static void set_modes(unsigned modes) noexcept {
+    write((read() & ~Register{flush_bits}) | modes);
+  }
 };
 
 /// While it lives, the calling thread takes the two flush modes `modes` (FlushModeBits::
@@ -107,27 +128,27 @@ class SameFlushModes {
 /// operands as zero (see the file comment); its destructor restores the previous modes.
 class FlushDenormals {
  public:
-  /// True where the guard can set the modes (x86 with SSE, g++ or clang).
-  static constexpr bool supported = POINTMASS_DETAIL_MXCSR == 1;
+  /// True where the guard can set the modes (x86 with SSE, or AArch64; g++ or clang).
+  static constexpr bool supported = POINTMASS_DETAIL_FLUSH_REGISTER != 0;
 
   FlushDenormals() noexcept : saved_(Bits::modes()) { Bits::set_modes(Bits::flush_bits); }
-  /// Restores the two modes alone: the exception flags raised meanwhile, and any other change
+  /// Restores the flush modes alone: the exception flags raised meanwhile, and any other change
   /// to the control register (rounding, traps), stay.
   ~FlushDenormals() { Bits::set_modes(saved_); }
   FlushDenormals(const FlushDenormals&) = delete;
   FlushDenormals& operator=(const FlushDenormals&) = delete;
 
-  /// True when the calling thread flushes subnormals now (both modes on), whether by a guard
-  /// or otherwise.
+  /// True when the calling thread flushes subnormals now (every flush mode on), whether by a
+  /// guard or otherwise.
   [[nodiscard]] static bool active() noexcept {
     return supported && Bits::modes() == Bits::flush_bits;
   }
 
  private:
   using Bits = detail::FlushModeBits;
-  unsigned saved_;  // the two modes' bits as they were
+  unsigned saved_;  // the flush modes' bits as they were
 };
 
 }  // namespace pointmass
 
-#undef POINTMASS_DETAIL_MXCSR
+#undef POINTMASS_DETAIL_FLUSH_REGISTER
