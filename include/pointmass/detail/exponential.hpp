@@ -41,6 +41,7 @@
 #pragma once
 
 #include <bit>
+#include <cfloat>
 #include <cstdint>
 #include <limits>
 #include <type_traits>
@@ -95,6 +96,31 @@ struct ExpTraits<double> {
   static constexpr double normal_x_min = -700.0;  ///< e^x normal for x_hi >= this: n >= -1010
   static constexpr double normal_x_max = 700.0;   ///< and <= this: n <= 1010
 };
+
+#if LDBL_MANT_DIG == DBL_MANT_DIG && LDBL_MAX_EXP == DBL_MAX_EXP
+/// long double where it is double itself (32-bit ARM, Windows): double's traits, so that it
+/// takes the same exponential, bit for bit. (Where long double is wider, it calls the C
+/// library instead, and this is not defined: using it there does not compile.)
+template <>
+struct ExpTraits<long double> {
+  using D = ExpTraits<double>;
+  using bits = D::bits;
+  static constexpr int significand_bits = D::significand_bits;
+  static constexpr int exponent_bias = D::exponent_bias;
+  static constexpr bits split_mask = D::split_mask;
+  static constexpr long double shifter = D::shifter;
+  static constexpr long double inv_ln2 = D::inv_ln2;
+  static constexpr long double ln2_hi = D::ln2_hi;
+  static constexpr long double ln2_lo = D::ln2_lo;
+  static constexpr long double x_min = D::x_min;
+  static constexpr long double x_max = D::x_max;
+  static constexpr int series_terms = D::series_terms;
+  static constexpr long double expm1_exact_scale = D::expm1_exact_scale;
+  static constexpr long double log_of_zero = D::log_of_zero;
+  static constexpr long double normal_x_min = D::normal_x_min;
+  static constexpr long double normal_x_max = D::normal_x_max;
+};
+#endif
 
 /// 1 / (k + 2)!, the coefficient of r^k in (e^r - 1 - r) / r^2, computed at compile time.
 template <class R, int K>
