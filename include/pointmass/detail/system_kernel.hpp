@@ -9,7 +9,10 @@
 // Vectorisation: the step loop runs over a trip count that is a multiple of vector_block (the
 // rest apart) and tells the compiler its arrays do not overlap (`#pragma GCC ivdep`, or
 // clang's `vectorize(assume_safety)`), so g++ and clang vectorise it at plain -O2 as well as
-// at -O3; -march=native (or -mavx2 -mfma) widens the vectors. See docs/performance.md.
+// at -O3; -march=native (or -mavx2 -mfma) widens the vectors. See docs/performance.md. Not on
+// 32-bit ARM with clang: its vector unit (NEON) does not keep IEEE arithmetic, so clang does not
+// vectorise floating-point loops there, and a hint it cannot honour warns (-Wpass-failed) in
+// the user's build.
 //
 // Traversal: while the arrays take more than `alternation_floor_bytes` (32 KiB) and at most
 // `alternation_limit_bytes` (8 MiB), ParticleSystem::step walks the particles forwards and
@@ -31,9 +34,9 @@
 #include "exponential.hpp"
 #include "validate.hpp"
 
-#if defined(__clang__)
+#if defined(__clang__) && !defined(__arm__)
 #define POINTMASS_DETAIL_INDEPENDENT_ITERATIONS _Pragma("clang loop vectorize(assume_safety)")
-#elif defined(__GNUC__)
+#elif defined(__GNUC__) && !defined(__clang__)
 #define POINTMASS_DETAIL_INDEPENDENT_ITERATIONS _Pragma("GCC ivdep")
 #else
 #define POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
