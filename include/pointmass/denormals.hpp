@@ -28,9 +28,10 @@
 // needs none: it runs every chunk under the modes of the thread that called it (and gives
 // each worker its own back after), so a guard around the call covers its workers, whatever
 // modes the pool's threads had. Supported with g++ and clang
-// on x86-64 and on 32-bit x86 with SSE (the MXCSR register's FTZ and DAZ bits), and on 64-bit
-// ARM (the FPCR register's FZ bit, which flushes subnormal operands and results alike);
-// elsewhere `supported` is false and the guard does nothing.
+// on x86-64 and on 32-bit x86 with SSE (the MXCSR register's FTZ and DAZ bits), on 64-bit
+// ARM (the FPCR register's FZ bit, which flushes subnormal operands and results alike) and on
+// 32-bit ARM with a floating-point unit (the FPSCR's FZ bit, the same); elsewhere `supported`
+// is false and the guard does nothing.
 //
 // Owns: FlushDenormals, and detail::SameFlushModes (a chunk of a parallel step under the
 // calling thread's modes).
@@ -39,12 +40,15 @@
 
 #include "config.hpp"
 
-// Which register holds the modes: 1, x86's MXCSR; 2, AArch64's FPCR; 0, none known.
+// Which register holds the modes: 1, x86's MXCSR; 2, AArch64's FPCR; 3, 32-bit ARM's FPSCR;
+// 0, none known.
 #if (defined(__GNUC__) || defined(__clang__)) && \
     (defined(__x86_64__) || (defined(__i386__) && defined(__SSE__)))
 #define POINTMASS_DETAIL_FLUSH_REGISTER 1
 #elif (defined(__GNUC__) || defined(__clang__)) && defined(__aarch64__)
 #define POINTMASS_DETAIL_FLUSH_REGISTER 2
+#elif (defined(__GNUC__) || defined(__clang__)) && defined(__arm__) && defined(__ARM_FP)
+#define POINTMASS_DETAIL_FLUSH_REGISTER 3
 #else
 #define POINTMASS_DETAIL_FLUSH_REGISTER 0
 #endif
@@ -54,12 +58,15 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 namespace detail {
 
 /// The flush modes in the floating-point control register: on x86, the SSE control register
-/// (MXCSR), bit 15, flush to zero, and bit 6, denormals are zero; on AArch64, the FPCR's bit
-/// 24 (FZ), which does both for single and double precision. Where neither exists, reads
-/// give 0 and writes do nothing.
+/// (MXCSR), bit 15, flush to zero, and bit 6, denormals are zero; on ARM, bit 24 (FZ) of the
+/// FPCR (AArch64) or FPSCR (32-bit), which does both for single and double precision. Where
+/// none exists, reads give 0 and writes do nothing.
 struct FlushModeBits {
 #if POINTMASS_DETAIL_FLUSH_REGISTER == 2
   using Register = unsigned long long;  // FPCR is 64 bits wide
+  static constexpr unsigned flush_bits = 1u << 24;
+#elif POINTMASS_DETAIL_FLUSH_REGISTER == 3
+  using Register = unsigned;
   static constexpr unsigned flush_bits = 1u << 24;
 #else
   using Register = unsigned;
@@ -75,6 +82,10 @@ struct FlushModeBits {
     Register fpcr = 0;
     __asm__ __volatile__("mrs %0, fpcr" : "=r"(fpcr));
     return fpcr;
+#elif POINTMASS_DETAIL_FLUSH_REGISTER == 3
+    Register fpscr = 0;
+    __asm__ __volatile__("vmrs %0, fpscr" : "=r"(fpscr));
+    return fpscr;
 #else
     return 0;
 #endif
@@ -85,6 +96,8 @@ struct FlushModeBits {
     __asm__ __volatile__("ldmxcsr %0" : : "m"(value) : "memory");
 #elif POINTMASS_DETAIL_FLUSH_REGISTER == 2
     __asm__ __volatile__("msr fpcr, %0" : : "r"(value) : "memory");
+#elif POINTMASS_DETAIL_FLUSH_REGISTER == 3
+    __asm__ __volatile__("vmsr fpscr, %0" : : "r"(value) : "memory");
 #else
     static_cast<void>(value);
 #endif
@@ -92,8 +105,8 @@ struct FlushModeBits {
   /// The calling thread's flush modes (their bits; 0 where unsupported).
   static unsigned modes() noexcept { return static_cast<unsigned>(read() & flush_bits); }
   /// Sets the calling thread's flush modes to `modes` (bits of flush_bits), keeping the rest
-  /// of the register: rounding and traps (the exception flags, in MXCSR or in AArch64's
-  /// separate FPSR, stay as they are).
+  /// of the register: rounding and traps (the exception flags, in MXCSR and FPSCR or in
+  /// AArch64's separate FPSR, stay as they are).
   static void set_modes(unsigned modes) noexcept {
     write((read() & ~Register{flush_bits}) | modes);
   }
@@ -128,7 +141,8 @@ class SameFlushModes {
 /// operands as zero (see the file comment); its destructor restores the previous modes.
 class FlushDenormals {
  public:
-  /// True where the guard can set the modes (x86 with SSE, or AArch64; g++ or clang).
+  /// True where the guard can set the modes (x86 with SSE, or ARM with a floating-point unit;
+  /// g++ or clang).
   static constexpr bool supported = POINTMASS_DETAIL_FLUSH_REGISTER != 0;
 
   FlushDenormals() noexcept : saved_(Bits::modes()) { Bits::set_modes(Bits::flush_bits); }
