@@ -9,7 +9,9 @@ POINTMASS_PACKAGES=(cmake ninja-build g++ clang libclang-rt-14-dev libboost-dev 
                     libtrilinos-kokkos-dev  # pointmass::kokkos and tests/kokkos (Serial backend)
                     g++-multilib  # scripts/test.sh i386: g++ -m32
                     qemu-user binutils-aarch64-linux-gnu libc6-dev-arm64-cross  # ... aarch64
-                    libstdc++-12-dev-arm64-cross libgcc-12-dev-arm64-cross)
+                    libstdc++-12-dev-arm64-cross libgcc-12-dev-arm64-cross
+                    binutils-arm-linux-gnueabihf libc6-dev-armhf-cross  # ... armv7
+                    libstdc++-12-dev-armhf-cross libgcc-12-dev-armhf-cross)
 
 # Installs those of the named Debian packages that are missing (apt-get update first, once).
 ensure_packages() {

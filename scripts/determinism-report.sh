@@ -4,12 +4,14 @@
 # compiler and set of flags below, runs it, and prints its digest over every trajectory and
 # whether the scalar and batch paths agreed bit for bit, as a Markdown table that it writes
 # into docs/numerics.md ("Determinism") between the determinism markers. The 32-bit x86 build
-# runs natively; the 64-bit ARM one, cross-compiled by clang, under qemu-user.
+# runs natively; the ARM ones, cross-compiled by clang, under qemu-user.
 # Usage: scripts/determinism-report.sh
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 ensure_packages g++ clang g++-multilib qemu-user binutils-aarch64-linux-gnu \
-  libc6-dev-arm64-cross libstdc++-12-dev-arm64-cross libgcc-12-dev-arm64-cross
+  libc6-dev-arm64-cross libstdc++-12-dev-arm64-cross libgcc-12-dev-arm64-cross \
+  binutils-arm-linux-gnueabihf libc6-dev-armhf-cross libstdc++-12-dev-armhf-cross \
+  libgcc-12-dev-armhf-cross
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 variants=(
@@ -26,6 +28,7 @@ variants=(
   "g++ -std=c++20 -O2 -ffast-math"
   "g++ -m32 -msse2 -mfpmath=sse -std=c++20 -O2"
   "clang++ --target=aarch64-linux-gnu -std=c++20 -O2 -ffp-contract=off"
+  "clang++ --target=arm-linux-gnueabihf -march=armv7-a -mfpu=vfpv3-d16 -std=c++20 -O2 -ffp-contract=off"
 )
 fma="without FMA"
 grep -qw fma /proc/cpuinfo 2>/dev/null && fma="with FMA"
@@ -41,6 +44,7 @@ for variant in "${variants[@]}"; do
     -o "$work/determinism"
   run=()
   [[ $variant == *--target=aarch64* ]] && run=(qemu-aarch64 -L /usr/aarch64-linux-gnu)
+  [[ $variant == *--target=arm-* ]] && run=(qemu-arm -L /usr/arm-linux-gnueabihf)
   output=$("${run[@]}" "$work/determinism" || true)
   digest=$(sed -n 's/^all //p' <<<"$output")
   configurations=$(grep -vc '^all \|^scalar and batch\|^MISMATCH' <<<"$output" || true)
@@ -49,7 +53,7 @@ for variant in "${variants[@]}"; do
 done
 {
   echo "Command: \`scripts/determinism-report.sh\`, on an x86-64 CPU $fma (g++ $gxx, clang $clangxx,"
-  echo "glibc $glibc; the \`--target=aarch64-linux-gnu\` build runs under qemu-user); \"digest\""
+  echo "glibc $glibc; the \`--target\` builds run under qemu-user); \"digest\""
   echo "is over all $configurations configurations."
   echo
   echo "| build | digest | scalar and batch |"

@@ -18,14 +18,16 @@
 # the same for 64-bit ARM with clang (cmake/toolchains/aarch64-linux-gnu-clang.cmake) and runs
 # it under qemu-user: another instruction set, FPCR's flush-to-zero for FlushDenormals, a
 # 113-bit long double, and again the same bits (contraction off, as the determinism rules say).
+# The armv7 configuration runs the core, contract, batch and precision suites for 32-bit ARM,
+# under qemu-user too: a long double that is double itself, and FPSCR's flush-to-zero.
 #   scripts/test.sh            everything
-#   scripts/test.sh gcc        one configuration: gcc, clang, sanitize, i386 or aarch64
+#   scripts/test.sh gcc        one configuration: gcc, clang, sanitize, i386, aarch64 or armv7
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 ensure_packages "${POINTMASS_PACKAGES[@]}"
 
 configurations=("$@")
-((${#configurations[@]})) || configurations=(gcc clang sanitize i386 aarch64)
+((${#configurations[@]})) || configurations=(gcc clang sanitize i386 aarch64 armv7)
 
 for configuration in "${configurations[@]}"; do
   dir="$POINTMASS_ROOT/build/test-$configuration"
@@ -61,7 +63,20 @@ for configuration in "${configurations[@]}"; do
         -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_CHECKS=OFF \
         -DCMAKE_CXX_FLAGS=-ffp-contract=off
       ;;
-    *) echo "unknown configuration: $configuration (gcc, clang, sanitize, i386, aarch64)" >&2
+    armv7)
+      suites=(tests/pointmass_tests tests/pointmass_contract_tests
+              tests/system/pointmass_system_tests tests/precision/pointmass_precision_tests)
+      cmake -S "$POINTMASS_ROOT" -B "$dir" -G Ninja \
+        -DCMAKE_TOOLCHAIN_FILE="$POINTMASS_ROOT/cmake/toolchains/arm-linux-gnueabihf-clang.cmake" \
+        -DCMAKE_BUILD_TYPE=Release -DPOINTMASS_BUILD_BENCHMARKS=OFF \
+        -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_CHECKS=OFF \
+        "-DCMAKE_CXX_FLAGS=-march=armv7-a -mfpu=vfpv3-d16 -mfloat-abi=hard -ffp-contract=off"
+      cmake --build "$dir" --parallel "$(nproc)" --target "${suites[@]##*/}"
+      echo "== $configuration: test"
+      for suite in "${suites[@]}"; do qemu-arm -L /usr/arm-linux-gnueabihf "$dir/$suite"; done
+      continue
+      ;;
+    *) echo "unknown configuration: $configuration (gcc, clang, sanitize, i386, aarch64, armv7)" >&2
        exit 2 ;;
   esac
   echo "== $configuration: test"

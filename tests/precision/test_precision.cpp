@@ -506,7 +506,8 @@ TEST_CASE("render-relative: rounded once at the edge of the range too") {
   CHECK(batch[0].y == -std::numeric_limits<float>::max());
   // The same for double from long double, where long double is wider.
   if constexpr (std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits) {
-    const long double Md = 0x1p1024L - 0x1p970L;
+    // (ldexp, not the literal 0x1p1024L: a long double that is double would warn at it)
+    const long double Md = std::ldexp(1.0L, 1024) - std::ldexp(1.0L, 970);
     CHECK(pm::detail::PositionStorage<long double>::relative<double>(Md, 1e-300L) ==
           std::numeric_limits<double>::max());
   }
@@ -615,8 +616,12 @@ TEST_CASE_TEMPLATE("render-relative: the exact offset rounded once to float, aga
     }
     ++checked;
   }
-  CHECK(checked > 10000);
-  CHECK(twice_differs > 100);
+  // Where long double is double itself (32-bit ARM), p - o is exact in it only where it is a
+  // double, so that no difference is rounded twice: the cases it can check, it checks.
+  if constexpr (std::numeric_limits<Wide>::digits > std::numeric_limits<double>::digits) {
+    CHECK(checked > 10000);
+    CHECK(twice_differs > 100);
+  }
 }
 
 TEST_CASE("render-relative: compensated pairs whose hi + lo is no double, at a float midpoint") {
@@ -928,19 +933,20 @@ TEST_CASE("set_position on compensated positions: every position() the pair give
     using Pair = pm::Precision<double, pm::Compensated<double>>;
     const long double top = static_cast<long double>(std::numeric_limits<double>::max());
     const long double mid = top + 0x1p970L;
+    const long double up = std::numeric_limits<long double>::infinity();  // nextafter's way
     pm::Particle<Pair> particle;
     particle.set_position({mid, 0.0L, 0.0L});
     CHECK(particle.stored_position().x == std::numeric_limits<double>::max());
     CHECK(particle.stored_position_error().x == 0x1p970);
     CHECK(particle.position().x == mid);
-    CHECK_THROWS_AS(particle.set_position({std::nextafter(mid, 1e4000L), 0.0L, 0.0L}),
+    CHECK_THROWS_AS(particle.set_position({std::nextafter(mid, up), 0.0L, 0.0L}),
                     std::invalid_argument);
 
     // The report's text holds all three refused components, each reading back as itself,
     // at long double's longest: 21 significant digits for x87's 64 bits, 36 for a 113-bit
     // quad, where three of them need more than 128 characters.
-    const long double past = std::nextafter(mid, 1e4000L);
-    const long double refused[3] = {-past, past, -std::nextafter(past, 1e4000L)};
+    const long double past = std::nextafter(mid, up);
+    const long double refused[3] = {-past, past, -std::nextafter(past, up)};
     std::string message;
     try {
       particle.set_position({refused[0], refused[1], refused[2]});
