@@ -2,16 +2,20 @@
 # Shared by the project's commands: installing what they need, configuring and building.
 # Sourced, not run.
 
+# The Debian packages the builds for other processors need (scripts/test.sh i386, aarch64
+# and armv7; scripts/determinism-report.sh): g++ -m32, and clang's ARM targets under qemu.
+POINTMASS_CROSS_PACKAGES=(g++-multilib
+                          qemu-user binutils-aarch64-linux-gnu libc6-dev-arm64-cross
+                          libstdc++-12-dev-arm64-cross libgcc-12-dev-arm64-cross
+                          binutils-arm-linux-gnueabihf libc6-dev-armhf-cross
+                          libstdc++-12-dev-armhf-cross libgcc-12-dev-armhf-cross)
+
 # The Debian packages a full build and test run needs.
 POINTMASS_PACKAGES=(cmake ninja-build g++ clang libclang-rt-14-dev libboost-dev doctest-dev
                     libbenchmark-dev libtbb-dev gnuplot-nox doxygen pkg-config
                     libglm-dev libeigen3-dev  # test-only (tests/packaging/user_vectors)
                     libtrilinos-kokkos-dev  # pointmass::kokkos and tests/kokkos (Serial backend)
-                    g++-multilib  # scripts/test.sh i386: g++ -m32
-                    qemu-user binutils-aarch64-linux-gnu libc6-dev-arm64-cross  # ... aarch64
-                    libstdc++-12-dev-arm64-cross libgcc-12-dev-arm64-cross
-                    binutils-arm-linux-gnueabihf libc6-dev-armhf-cross  # ... armv7
-                    libstdc++-12-dev-armhf-cross libgcc-12-dev-armhf-cross)
+                    "${POINTMASS_CROSS_PACKAGES[@]}")
 
 # Installs those of the named Debian packages that are missing (apt-get update first, once).
 ensure_packages() {

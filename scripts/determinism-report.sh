@@ -8,10 +8,7 @@
 # Usage: scripts/determinism-report.sh
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-ensure_packages g++ clang g++-multilib qemu-user binutils-aarch64-linux-gnu \
-  libc6-dev-arm64-cross libstdc++-12-dev-arm64-cross libgcc-12-dev-arm64-cross \
-  binutils-arm-linux-gnueabihf libc6-dev-armhf-cross libstdc++-12-dev-armhf-cross \
-  libgcc-12-dev-armhf-cross
+ensure_packages g++ clang "${POINTMASS_CROSS_PACKAGES[@]}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 variants=(
