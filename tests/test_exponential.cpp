@@ -11,6 +11,7 @@
 
 #include <pointmass/detail/exponential.hpp>
 
+#include "log_oracle.hpp"
 #include "ulp.hpp"
 
 namespace {
@@ -138,6 +139,69 @@ TEST_CASE_TEMPLATE("the split logarithm is ln d to half again the precision", R,
     CHECK(std::fabs(sum - exact) <=
           std::fabs(exact) * static_cast<long double>(std::numeric_limits<R>::epsilon()) / 1024);
   }
+}
+
+namespace {
+
+using pointmass::test::LogOracle;
+
+/// How far hi + lo is from the oracle's ln d, relative to ln d. The pairs agree in their
+/// leading bits, so each difference is exact or errs by 2^-79 of ln d at most.
+template <class R>
+double relative_error(R hi, R lo, const LogOracle& oracle) {
+  return std::fabs((static_cast<double>(hi) - oracle.hi) + (static_cast<double>(lo) - oracle.lo)) /
+         std::fabs(oracle.hi);
+}
+
+/// split_log for double, or long double where it is double: hi of half the significand, and
+/// hi + lo within 2^-72 of ln d (exponential.hpp states about 2^-75; lo alone is rounded at
+/// 2^-79). Every platform, whatever its long double and C library: the logarithm is the
+/// library's own.
+template <class R>
+void check_double_split_log() {
+  double worst = 0;
+  for (const LogOracle& oracle : pointmass::test::log_oracle_double) {
+    CAPTURE(oracle.d);
+    const auto ln_d = detail::split_log(static_cast<R>(oracle.d));
+    CHECK(significant_bits(ln_d.hi) <= half_significand<double>);
+    const double error = relative_error(ln_d.hi, ln_d.lo, oracle);
+    worst = error > worst ? error : worst;
+    CHECK(error <= 0x1p-72);
+  }
+  MESSAGE("split_log's worst relative error over the table: ", worst);
+}
+
+}  // namespace
+
+TEST_CASE("split_log for double is ln d to 2^-72 against correctly rounded values, on every platform") {
+  check_double_split_log<double>();
+  if constexpr (!pointmass::wider_than_double_v<long double>) {
+    check_double_split_log<long double>();  // long double is double here: the same path
+  }
+}
+
+TEST_CASE("split_log for float is ln d to 2^-35 against correctly rounded values, on every platform") {
+  for (const LogOracle& oracle : pointmass::test::log_oracle_float) {
+    CAPTURE(oracle.d);
+    const auto ln_d = detail::split_log(static_cast<float>(oracle.d));
+    CHECK(significant_bits(ln_d.hi) <= half_significand<float>);
+    // hi's 12 bits and lo's 24: lo's rounding is below 2^-36 of ln d.
+    CHECK(relative_error(ln_d.hi, ln_d.lo, oracle) <= 0x1p-35);
+    // log_double itself, the double float's split is cut from: 2^-50 (it states 2^-51).
+    CHECK(std::fabs(detail::log_double(oracle.d) - oracle.hi) <= std::fabs(oracle.hi) * 0x1p-50);
+  }
+}
+
+TEST_CASE("the library's logarithms over the whole double range: subnormals, both sides of sqrt(1/2), d near 1") {
+  for (const LogOracle& oracle : pointmass::test::log_oracle_double) {
+    CAPTURE(oracle.d);
+    const detail::DoubleDouble wide = detail::log_double_double(oracle.d);
+    CHECK(relative_error(wide.hi, wide.lo, oracle) <= 0x1p-72);
+    CHECK(std::fabs(detail::log_double(oracle.d) - oracle.hi) <= std::fabs(oracle.hi) * 0x1p-50);
+  }
+  // Constant expressions too (every step is + - * / and bit casts).
+  static_assert(detail::log_double_double(0.5).hi == -0x1.62e42fefa39efp-1);
+  static_assert(detail::log_double_double(1.0).hi == 0.0 && detail::log_double(1.0) == 0.0);
 }
 
 TEST_CASE_TEMPLATE("e^x and e^x - 1 over the whole range: overflow, underflow, NaN", R, float, double) {

@@ -76,7 +76,8 @@ template <Real R>
 class LogDamping {
  public:
   constexpr LogDamping() noexcept = default;
-  POINTMASS_HD explicit LogDamping(R d) noexcept : value_(d), log_(detail::split_log(d)) {}
+  POINTMASS_HD constexpr explicit LogDamping(R d) noexcept
+      : value_(d), log_(detail::split_log(d)) {}
   /// d and split_log(d), computed before (a ParticleSystem stores them in separate columns).
   POINTMASS_HD constexpr LogDamping(R d, const detail::SplitLog<R>& log) noexcept
       : value_(d), log_(log) {}

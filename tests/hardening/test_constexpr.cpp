@@ -2,9 +2,9 @@
 // A particle stepped at compile time. damping::None and damping::PerFrame call no maths
 // function, so a whole trajectory is a constant expression with every position policy
 // (position::Exact too, paired with None: its series are plain arithmetic). PerSecond and
-// Exact step with the library's own exponential, constexpr too, but setting their damping
-// takes a logarithm, which is not constexpr in C++20 (they step at compile time with the
-// default d = 1); AccelerateThenDamp calls the C library's pow, never constexpr.
+// Exact too, damping value and all: ln d, taken when it is set, and d^t are the library's own
+// logarithm and exponential, constexpr. AccelerateThenDamp calls the C library's pow, never
+// constexpr.
 //
 // The static_asserts check physics, not recorded numbers: with dyadic inputs (powers of two)
 // every operation is exact in float and in double, so the discrete scheme's closed forms hold
@@ -12,6 +12,9 @@
 // at run time agree bit for bit, with inputs that round.
 #include <doctest/doctest.h>
 
+#include <array>
+#include <cstddef>
+#include <iterator>
 #include <limits>
 
 #include <pointmass/particle.hpp>
@@ -105,9 +108,9 @@ static_assert(immovable_stays<float>());
 static_assert(immovable_stays<double>());
 
 // PerSecond and Exact step at compile time too: d^t is the library's own exponential
-// (detail/exponential.hpp), constexpr. Setting a damping value is not constexpr (its
-// logarithm), so these particles keep the default, d = 1: None's trajectory, bit for bit,
-// through the whole exponential (e^0 is computed, not skipped).
+// (detail/exponential.hpp), constexpr. With the default damping, d = 1, a particle follows
+// None's trajectory, bit for bit, through the whole exponential (e^0 is computed, not
+// skipped).
 template <class R, class D, class P>
 constexpr bool default_damping_steps_as_none() {
   auto start = [](auto particle) {
@@ -133,6 +136,39 @@ static_assert(default_damping_steps_as_none<float, damping::PerSecond, position:
 static_assert(default_damping_steps_as_none<float, damping::Exact, position::Exact>());
 static_assert(default_damping_steps_as_none<double, damping::Exact, position::Exact>());
 
+// And with a damping value set at compile time (its logarithm is the library's own,
+// detail::split_log): d = 1/4 over 1/2 s keeps d^t = 1/2 of the velocity, and d = 1/2 over
+// 2 s a quarter, exactly (the exponential rounds to those powers of two).
+template <class R, class D, class P>
+constexpr Vector3<R> velocity_after_one_step(R damping, R t) {
+  Particle<R, D, P> particle;
+  particle.set_velocity({R(8), R(4), R(2)});
+  particle.set_damping(damping);
+  particle.integrate(t);
+  return particle.velocity();
+}
+static_assert(velocity_after_one_step<float, damping::PerSecond, position::Euler>(0.25f, 0.5f) ==
+              Vector3<float>{4.0f, 2.0f, 1.0f});
+static_assert(velocity_after_one_step<double, damping::PerSecond, position::Kinematic>(0.25, 0.5) ==
+              Vector3<double>{4.0, 2.0, 1.0});
+static_assert(velocity_after_one_step<double, damping::PerSecond, position::Euler>(0.5, 2.0) ==
+              Vector3<double>{2.0, 1.0, 0.5});
+static_assert(velocity_after_one_step<float, damping::Exact, position::Exact>(0.25f, 0.5f) ==
+              Vector3<float>{4.0f, 2.0f, 1.0f});
+static_assert(velocity_after_one_step<double, damping::Exact, position::Exact>(0.25, 0.5) ==
+              Vector3<double>{4.0, 2.0, 1.0});
+
+/// Damping values whose logarithms the compile-time and run-time test compares.
+template <class R>
+inline constexpr R log_inputs[] = {R(0.97), R(0.5), R(1e-3), R(0.999999), R(0.70710677),
+                                   std::numeric_limits<R>::denorm_min()};
+template <class R>
+inline constexpr auto compile_time_logs = [] {
+  std::array<detail::SplitLog<R>, std::size(log_inputs<R>)> logs{};
+  for (std::size_t i = 0; i < logs.size(); ++i) logs[i] = detail::split_log(log_inputs<R>[i]);
+  return logs;
+}();
+
 template <class R, class D, class P>
 constexpr Particle<R, D, P> rounding_shot(R t) {
   return shot<R, D, P>({R(1.1), R(2.3), R(0.7)}, {R(3.3), R(9.1), R(-1.7)},
@@ -152,6 +188,18 @@ void check_compile_time_equals_run_time() {
 
 }  // namespace
 
+TEST_CASE_TEMPLATE("a damping value's logarithm taken at compile time is the run-time one, bit for bit",
+                   R, float, double) {
+  for (std::size_t i = 0; i < std::size(log_inputs<R>); ++i) {
+    volatile R d = log_inputs<R>[i];  // keeps the run-time logarithm at run time
+    const detail::SplitLog<R> at_run_time = detail::split_log(static_cast<R>(d));
+    CAPTURE(log_inputs<R>[i]);
+    CHECK(compile_time_logs<R>[i].hi == at_run_time.hi);
+    CHECK(compile_time_logs<R>[i].lo == at_run_time.lo);
+    CHECK(at_run_time.lo != R(0));  // not trivially equal
+  }
+}
+
 TEST_CASE_TEMPLATE("a trajectory computed at compile time equals the run-time one, bit for bit",
                    R, float, double) {
   check_compile_time_equals_run_time<R, damping::None, position::Euler>();
@@ -161,4 +209,9 @@ TEST_CASE_TEMPLATE("a trajectory computed at compile time equals the run-time on
   check_compile_time_equals_run_time<R, damping::PerFrame, position::Euler>();
   check_compile_time_equals_run_time<R, damping::PerFrame, position::Kinematic>();
   check_compile_time_equals_run_time<R, damping::PerFrame, position::SemiImplicit>();
+  // The damping value 0.97 is set in the constant expression too: its logarithm as well.
+  check_compile_time_equals_run_time<R, damping::PerSecond, position::Euler>();
+  check_compile_time_equals_run_time<R, damping::PerSecond, position::Kinematic>();
+  check_compile_time_equals_run_time<R, damping::PerSecond, position::SemiImplicit>();
+  check_compile_time_equals_run_time<R, damping::Exact, position::Exact>();
 }

@@ -3,7 +3,8 @@
 //
 //   detail::exp(x), detail::expm1(x)     e^x and e^x - 1 in the precision of x
 //   detail::split_log(d)                 ln d for d in [0, 1], stored as hi + lo (once, when a
-//                                        damping value is set)
+//                                        damping value is set), from the library's own
+//                                        log_double / log_double_double
 //   detail::pow_unit(split_log(d), t)    d^t = e^(t ln d) for d in [0, 1], t >= 0
 //   detail::exp_unit(split_log(d), t)    d^t and d^t - 1 from one evaluation (damping::Exact)
 //   detail::phi_series<Offset>(x)        phi_Offset(x) = sum x^n / (n + Offset)! for |x| < 1
@@ -198,6 +199,143 @@ POINTMASS_HD constexpr R split_high(R x) noexcept {
                                                         T::split_mask));
 }
 
+/// A double-double: the number hi + lo, |lo| at most about an ulp of hi (some 106 bits).
+struct DoubleDouble {
+  double hi;
+  double lo;
+};
+
+/// a + b as s + e, exactly (Knuth's TwoSum: whatever the magnitudes).
+POINTMASS_HD constexpr DoubleDouble two_sum(double a, double b) noexcept {
+  const double s = a + b;
+  const double b_virtual = s - a;
+  const double a_virtual = s - b_virtual;
+  return {s, (a - a_virtual) + (b - b_virtual)};
+}
+
+/// a + b as s + e, exactly, where |a| >= |b| or a is 0 (Fast2Sum).
+POINTMASS_HD constexpr DoubleDouble fast_two_sum(double a, double b) noexcept {
+  const double s = a + b;
+  return {s, b - (s - a)};
+}
+
+/// a * b as p + e, to within 2^-104 |a b| (for products far from the subnormals): Dekker's
+/// product over split_high's halves. The halves are cut by a bit mask, not by Veltkamp's
+/// multiplication, which a compiler that contracts into fused multiply-adds would change;
+/// every partial product but lo * lo (27 bits by 27) is exact, so contraction changes at
+/// most that one's last bit.
+POINTMASS_HD constexpr DoubleDouble two_product(double a, double b) noexcept {
+  const double p = a * b;
+  const double a_hi = split_high(a);
+  const double a_lo = a - a_hi;
+  const double b_hi = split_high(b);
+  const double b_lo = b - b_hi;
+  return {p, (((a_hi * b_hi - p) + a_hi * b_lo) + a_lo * b_hi) + a_lo * b_lo};
+}
+
+/// x + y and x * y for double-doubles, to within a few 2^-104 of the result.
+POINTMASS_HD constexpr DoubleDouble dd_add(DoubleDouble x, DoubleDouble y) noexcept {
+  const DoubleDouble s = two_sum(x.hi, y.hi);
+  return fast_two_sum(s.hi, s.lo + (x.lo + y.lo));
+}
+POINTMASS_HD constexpr DoubleDouble dd_mul(DoubleDouble x, DoubleDouble y) noexcept {
+  const DoubleDouble p = two_product(x.hi, y.hi);
+  return fast_two_sum(p.hi, p.lo + (x.hi * y.lo + x.lo * y.hi));
+}
+
+/// 1 / n as a double-double (n a small odd integer): the quotient and its remainder's.
+POINTMASS_HD constexpr DoubleDouble dd_reciprocal(double n) noexcept {
+  const double q = 1.0 / n;
+  const DoubleDouble p = two_product(q, n);
+  return {q, ((1.0 - p.hi) - p.lo) / n};
+}
+
+/// A finite d > 0 as 2^k m with m in [sqrt(1/2), sqrt(2)], exactly (a subnormal d is scaled
+/// into the normal range first).
+struct LogReduced {
+  double k;
+  double m;
+};
+POINTMASS_HD constexpr LogReduced log_reduce(double d) noexcept {
+  using B = std::uint64_t;
+  double k = 0.0;
+  if (d < 0x1p-1022) {
+    d *= 0x1p54;
+    k = -54.0;
+  }
+  const B bits = __builtin_bit_cast(B, d);
+  k += static_cast<double>(static_cast<int>((bits >> 52) & 0x7FFu) - 1023);
+  double m = __builtin_bit_cast(double, static_cast<B>((bits & 0x000FFFFFFFFFFFFFu) |
+                                                       0x3FF0000000000000u));  // [1, 2)
+  if (m > 0x1.6a09e667f3bcdp+0) {  // above sqrt(2): halve it
+    m *= 0.5;
+    k += 1.0;
+  }
+  return {k, m};
+}
+
+/// ln 2 in two parts: the first of 42 bits, so that k times it is exact for |k| < 2^11.
+inline constexpr double log2_hi = 0x1.62e42fefa3800p-1;
+inline constexpr double log2_lo = 0x1.ef35793c76730p-45;
+
+/// sum_{j=J..Last} z^(j-J) / (2j + 1) by Horner's rule, in double (straight-line code).
+template <int J, int Last>
+POINTMASS_HD constexpr double atanh_tail(double z) noexcept {
+  constexpr double coefficient = 1.0 / (2 * J + 1);
+  if constexpr (J == Last) {
+    return coefficient;
+  } else {
+    return atanh_tail<J + 1, Last>(z) * z + coefficient;
+  }
+}
+
+/// ln d for a finite d > 0 in double, to within about 2^-51 |ln d|, from + - * / alone (no C
+/// library: the same bits wherever IEEE double arithmetic is, without contraction). For
+/// float's split_log, which keeps 36 bits of it. ln d = k ln 2 + 2 atanh f with
+/// f = (m - 1) / (m + 1), |f| <= 0.1716, and 2 atanh f = 2f (1 + z / 3 + z^2 / 5 + ...),
+/// z = f^2 <= 0.0295, to z^10 (the first term left out is below 2^-60 of the sum).
+POINTMASS_HD constexpr double log_double(double d) noexcept {
+  const LogReduced a = log_reduce(d);
+  const double f = (a.m - 1.0) / (a.m + 1.0);
+  const double z = f * f;
+  const double twice_f = 2.0 * f;
+  return (a.k * log2_hi + twice_f) + (a.k * log2_lo + twice_f * (z * atanh_tail<1, 10>(z)));
+}
+
+/// ln d for a finite d > 0 as a double-double, to within about 2^-75 |ln d| (the tests hold
+/// it to 2^-72 against correctly rounded values): what split_log keeps for double, 79 bits,
+/// to within its last few, and x = t ln d to 2^-65 of itself at the largest |x| of any d^t
+/// that is not 0. From + - * / alone, like log_double. ln m = 2f + 2f^3 / 3 + 2f^5 / 5 + ...
+/// to f^31: f to f^7 / 7 in double-double, the rest (below 2^-23 of the sum) in double.
+POINTMASS_HD constexpr DoubleDouble log_double_double(double d) noexcept {
+  const LogReduced a = log_reduce(d);
+  // f = (m - 1) / (m + 1): m - 1 is exact (Sterbenz), m + 1 a TwoSum; the quotient, then
+  // its remainder's quotient (both through one reciprocal).
+  const double numerator = a.m - 1.0;
+  const DoubleDouble denominator = two_sum(a.m, 1.0);
+  const double reciprocal = 1.0 / denominator.hi;
+  const double f_hi = numerator * reciprocal;
+  const DoubleDouble product = two_product(f_hi, denominator.hi);
+  const double f_lo =
+      (((numerator - product.hi) - product.lo) - f_hi * denominator.lo) * reciprocal;
+  const DoubleDouble f = fast_two_sum(f_hi, f_lo);
+  const DoubleDouble z = dd_mul(f, f);
+  const DoubleDouble cube = dd_mul(f, z);
+  const DoubleDouble fifth = dd_mul(cube, z);
+  const DoubleDouble seventh = dd_mul(fifth, z);
+  constexpr DoubleDouble third_coefficient = dd_reciprocal(3.0);
+  constexpr DoubleDouble fifth_coefficient = dd_reciprocal(5.0);
+  constexpr DoubleDouble seventh_coefficient = dd_reciprocal(7.0);
+  const double rest = seventh.hi * (z.hi * atanh_tail<4, 15>(z.hi));
+  const DoubleDouble half_ln_m =
+      dd_add(dd_add(f, dd_mul(cube, third_coefficient)),
+             dd_add(dd_mul(fifth, fifth_coefficient),
+                    dd_add(dd_mul(seventh, seventh_coefficient), DoubleDouble{rest, 0.0})));
+  // ln d = k log2_hi (exact) + 2 half_ln_m + k log2_lo.
+  const DoubleDouble sum = two_sum(a.k * log2_hi, 2.0 * half_ln_m.hi);
+  return fast_two_sum(sum.hi, sum.lo + (2.0 * half_ln_m.lo + a.k * log2_lo));
+}
+
 /// ln d for a damping value d in [0, 1], as hi + lo: hi has half the significand (so that
 /// t_hi * hi is exact), lo the rest to about twice R's precision. d = 0 gives hi = -infinity
 /// and lo = 0; d = 1 gives 0 and 0. For long double, hi = ln d and lo = 0.
@@ -207,24 +345,28 @@ struct SplitLog {
   R lo = R(0);
 };
 
-/// Computes ln d in a wider precision (double for float, long double for double; on a CUDA
-/// device, where long double is double, lo is 0 and d^t is as accurate as the rounded ln d).
-/// Not on the hot path: called when a damping value is set.
+/// Computes ln d as a double-double (log_double_double, for float and double alike, and for
+/// long double where it is double), so hi + lo is the same everywhere: on a CUDA device, on
+/// 32-bit ARM and with MSVC as on x86-64, whatever the C library's log. Where long double is
+/// wider than double, its own logl, with lo = 0. Not on the hot path: called when a damping
+/// value is set (docs/numerics.md measures what that costs). A constant expression for float
+/// and double (and long double where it is double): a damping value can be set at compile time.
 template <Real R>
-POINTMASS_HD inline SplitLog<R> split_log(R d) noexcept {
+POINTMASS_HD constexpr SplitLog<R> split_log(R d) noexcept {
   if (real_equal(d, R(1))) return {R(0), R(0)};
   if constexpr (wider_than_double_v<R>) {
     return {d > R(0) ? real_log(d) : -real_infinity<R>, R(0)};
   } else {
-#if defined(__CUDA_ARCH__)
-    using Wide = double;
-#else
-    using Wide = std::conditional_t<std::is_same_v<R, float>, double, long double>;
-#endif
     if (!(d > R(0))) return {ExpTraits<R>::log_of_zero, R(0)};
-    const Wide wide = real_log(static_cast<Wide>(d));
-    const R hi = split_high(static_cast<R>(wide));
-    return {hi, static_cast<R>(wide - static_cast<Wide>(hi))};
+    if constexpr (std::is_same_v<R, float>) {
+      const double wide = log_double(static_cast<double>(d));
+      const R hi = split_high(static_cast<R>(wide));
+      return {hi, static_cast<R>(wide - static_cast<double>(hi))};  // the difference is exact
+    } else {
+      const DoubleDouble wide = log_double_double(static_cast<double>(d));
+      const R hi = split_high(static_cast<R>(wide.hi));
+      return {hi, static_cast<R>((wide.hi - static_cast<double>(hi)) + wide.lo)};
+    }
   }
 }
 
