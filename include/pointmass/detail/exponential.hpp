@@ -304,9 +304,10 @@ POINTMASS_HD constexpr double log_double(double d) noexcept {
 
 /// ln d for a finite d > 0 as a double-double, to within about 2^-75 |ln d| (the tests hold
 /// it to 2^-72 against correctly rounded values): what split_log keeps for double, 79 bits,
-/// to within its last few, and x = t ln d to 2^-65 of itself at the largest |x| of any d^t
-/// that is not 0. From + - * / alone, like log_double. ln m = 2f + 2f^3 / 3 + 2f^5 / 5 + ...
-/// to f^31: f to f^7 / 7 in double-double, the rest (below 2^-23 of the sum) in double.
+/// to within its last few; it moves d^t = e^(t ln d) by at most 2^-65 of itself, at the
+/// largest |t ln d| of any d^t that is not 0. From + - * / alone, like log_double.
+/// ln m = 2f + 2f^3 / 3 + 2f^5 / 5 + ... to f^31: f to f^7 / 7 in double-double, the rest
+/// (below 2^-23 of the sum) in double.
 POINTMASS_HD constexpr DoubleDouble log_double_double(double d) noexcept {
   const LogReduced a = log_reduce(d);
   // f = (m - 1) / (m + 1): m - 1 is exact (Sterbenz), m + 1 a TwoSum; the quotient, then
@@ -338,19 +339,20 @@ POINTMASS_HD constexpr DoubleDouble log_double_double(double d) noexcept {
 
 /// ln d for a damping value d in [0, 1], as hi + lo: hi has half the significand (so that
 /// t_hi * hi is exact), lo the rest to about twice R's precision. d = 0 gives hi = -infinity
-/// and lo = 0; d = 1 gives 0 and 0. For long double, hi = ln d and lo = 0.
+/// and lo = 0; d = 1 gives 0 and 0. For a long double wider than double, hi = ln d, lo = 0.
 template <class R>
 struct SplitLog {
   R hi = R(0);
   R lo = R(0);
 };
 
-/// Computes ln d as a double-double (log_double_double, for float and double alike, and for
-/// long double where it is double), so hi + lo is the same everywhere: on a CUDA device, on
-/// 32-bit ARM and with MSVC as on x86-64, whatever the C library's log. Where long double is
-/// wider than double, its own logl, with lo = 0. Not on the hot path: called when a damping
-/// value is set (docs/numerics.md measures what that costs). A constant expression for float
-/// and double (and long double where it is double): a damping value can be set at compile time.
+/// Computes ln d with the library's own logarithm (log_double for float, log_double_double
+/// for double and for long double where it is double), so hi + lo is the same everywhere: on
+/// a CUDA device, on 32-bit ARM and with MSVC as on x86-64, whatever the C library's log.
+/// Where long double is wider than double, the C library's logl, with lo = 0. Not on the hot
+/// path: called when a damping value is set (docs/numerics.md measures what that costs). A
+/// constant expression for float and double (and long double where it is double): a damping
+/// value can be set at compile time.
 template <Real R>
 POINTMASS_HD constexpr SplitLog<R> split_log(R d) noexcept {
   if (real_equal(d, R(1))) return {R(0), R(0)};
