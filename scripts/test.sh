@@ -29,7 +29,9 @@ ensure_packages "${POINTMASS_PACKAGES[@]}"
 configurations=("$@")
 ((${#configurations[@]})) || configurations=(gcc clang sanitize i386 aarch64 armv7)
 
+times=()
 for configuration in "${configurations[@]}"; do
+  started=$SECONDS
   dir="$POINTMASS_ROOT/build/test-$configuration"
   echo "== $configuration: configure and build in $dir"
   case "$configuration" in
@@ -74,11 +76,16 @@ for configuration in "${configurations[@]}"; do
       cmake --build "$dir" --parallel "$(nproc)" --target "${suites[@]##*/}"
       echo "== $configuration: test"
       for suite in "${suites[@]}"; do qemu-arm -L /usr/arm-linux-gnueabihf "$dir/$suite"; done
-      continue
       ;;
     *) echo "unknown configuration: $configuration (gcc, clang, sanitize, i386, aarch64, armv7)" >&2
        exit 2 ;;
   esac
-  echo "== $configuration: test"
-  ctest --test-dir "$dir" --output-on-failure --parallel "$(nproc)"
+  if [[ $configuration != armv7 ]]; then
+    echo "== $configuration: test"
+    ctest --test-dir "$dir" --output-on-failure --parallel "$(nproc)"
+  fi
+  elapsed=$((SECONDS - started))
+  times+=("$configuration $((elapsed / 60))m$((elapsed % 60))s")
 done
+# What each configuration took, build and tests (the whole run should stay well under 30 min).
+(IFS=';'; echo "== passed: ${times[*]}")

@@ -58,6 +58,14 @@ static_assert(detail::pow_unit(detail::SplitLog<float>{-0.6875f, 0.0f}, 0.0f) ==
 
 TEST_CASE_TEMPLATE("d^t and d^t - 1 are within 4 ulp of long double's for d in [1e-3, 1], t in [0, 1] s",
                    R, float, double) {
+  if constexpr (!pointmass::wider_than_double_v<long double> && std::is_same_v<R, double>) {
+    // Where long double is double (32-bit ARM) there is no wider oracle here: the oracle's own
+    // t * log(d), rounded to double, errs by up to |x| / 2 ulp of d^t, more than the library's
+    // (whose d^t is the same code and bits as on x86-64, where this case runs; its ln d is
+    // checked on this platform against correctly rounded values below).
+    MESSAGE("no oracle wider than double here: the double case runs where long double is wider");
+    return;
+  }
   long long worst_power = 0;
   long long worst_minus_one = 0;
   for (int i = 0; i <= 300; ++i) {
