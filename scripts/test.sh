@@ -29,9 +29,14 @@ ensure_packages "${POINTMASS_PACKAGES[@]}"
 configurations=("$@")
 ((${#configurations[@]})) || configurations=(gcc clang sanitize i386 aarch64 armv7)
 
+# Under qemu the two 10^6-step flights far from the origin take a minute or more each; their
+# float and double arithmetic is x86-64's bit for bit there (docs/numerics.md, "Determinism"),
+# and every other configuration runs them, so the ARM ones leave them out.
+far_flights="far from the origin: within 1 mm"
 times=()
 for configuration in "${configurations[@]}"; do
   started=$SECONDS
+  ctest_arguments=()
   dir="$POINTMASS_ROOT/build/test-$configuration"
   echo "== $configuration: configure and build in $dir"
   case "$configuration" in
@@ -64,6 +69,7 @@ for configuration in "${configurations[@]}"; do
         -DCMAKE_BUILD_TYPE=Release -DPOINTMASS_BUILD_BENCHMARKS=OFF \
         -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_CHECKS=OFF \
         -DCMAKE_CXX_FLAGS=-ffp-contract=off
+      ctest_arguments=(--exclude-regex "$far_flights")
       ;;
     armv7)
       suites=(tests/pointmass_tests tests/pointmass_contract_tests
@@ -75,14 +81,16 @@ for configuration in "${configurations[@]}"; do
         "-DCMAKE_CXX_FLAGS=-march=armv7-a -mfpu=vfpv3-d16 -mfloat-abi=hard -ffp-contract=off"
       cmake --build "$dir" --parallel "$(nproc)" --target "${suites[@]##*/}"
       echo "== $configuration: test"
-      for suite in "${suites[@]}"; do qemu-arm -L /usr/arm-linux-gnueabihf "$dir/$suite"; done
+      for suite in "${suites[@]}"; do
+        qemu-arm -L /usr/arm-linux-gnueabihf "$dir/$suite" --test-case-exclude="*$far_flights*"
+      done
       ;;
     *) echo "unknown configuration: $configuration (gcc, clang, sanitize, i386, aarch64, armv7)" >&2
        exit 2 ;;
   esac
   if [[ $configuration != armv7 ]]; then
     echo "== $configuration: test"
-    ctest --test-dir "$dir" --output-on-failure --parallel "$(nproc)"
+    ctest --test-dir "$dir" --output-on-failure --parallel "$(nproc)" "${ctest_arguments[@]}"
   fi
   elapsed=$((SECONDS - started))
   times+=("$configuration $((elapsed / 60))m$((elapsed % 60))s")
