@@ -238,6 +238,11 @@ POINTMASS_HD constexpr DoubleDouble dd_add(DoubleDouble x, DoubleDouble y) noexc
   const DoubleDouble s = two_sum(x.hi, y.hi);
   return fast_two_sum(s.hi, s.lo + (x.lo + y.lo));
 }
+/// x + y where |x.hi| >= |y.hi| (or x.hi is 0): dd_add with a Fast2Sum for the leading parts.
+POINTMASS_HD constexpr DoubleDouble dd_add_smaller(DoubleDouble x, DoubleDouble y) noexcept {
+  const DoubleDouble s = fast_two_sum(x.hi, y.hi);
+  return fast_two_sum(s.hi, s.lo + (x.lo + y.lo));
+}
 POINTMASS_HD constexpr DoubleDouble dd_mul(DoubleDouble x, DoubleDouble y) noexcept {
   const DoubleDouble p = two_product(x.hi, y.hi);
   return fast_two_sum(p.hi, p.lo + (x.hi * y.lo + x.lo * y.hi));
@@ -313,7 +318,7 @@ POINTMASS_HD constexpr DoubleDouble log_double_double(double d) noexcept {
   // f = (m - 1) / (m + 1): m - 1 is exact (Sterbenz), m + 1 a TwoSum; the quotient, then
   // its remainder's quotient (both through one reciprocal).
   const double numerator = a.m - 1.0;
-  const DoubleDouble denominator = two_sum(a.m, 1.0);
+  const DoubleDouble denominator = fast_two_sum(1.0, a.m);  // m's exponent is at most 1's
   const double reciprocal = 1.0 / denominator.hi;
   const double f_hi = numerator * reciprocal;
   const DoubleDouble product = two_product(f_hi, denominator.hi);
@@ -321,19 +326,22 @@ POINTMASS_HD constexpr DoubleDouble log_double_double(double d) noexcept {
       (((numerator - product.hi) - product.lo) - f_hi * denominator.lo) * reciprocal;
   const DoubleDouble f = fast_two_sum(f_hi, f_lo);
   const DoubleDouble z = dd_mul(f, f);
+  const DoubleDouble z2 = dd_mul(z, z);
   const DoubleDouble cube = dd_mul(f, z);
   const DoubleDouble fifth = dd_mul(cube, z);
-  const DoubleDouble seventh = dd_mul(fifth, z);
+  const DoubleDouble seventh = dd_mul(cube, z2);
   constexpr DoubleDouble third_coefficient = dd_reciprocal(3.0);
   constexpr DoubleDouble fifth_coefficient = dd_reciprocal(5.0);
   constexpr DoubleDouble seventh_coefficient = dd_reciprocal(7.0);
   const double rest = seventh.hi * (z.hi * atanh_tail<4, 15>(z.hi));
-  const DoubleDouble half_ln_m =
-      dd_add(dd_add(f, dd_mul(cube, third_coefficient)),
-             dd_add(dd_mul(fifth, fifth_coefficient),
-                    dd_add(dd_mul(seventh, seventh_coefficient), DoubleDouble{rest, 0.0})));
-  // ln d = k log2_hi (exact) + 2 half_ln_m + k log2_lo.
-  const DoubleDouble sum = two_sum(a.k * log2_hi, 2.0 * half_ln_m.hi);
+  // The terms share f's sign and shrink (|f| <= 0.1716): each sum a Fast2Sum, smallest first.
+  const DoubleDouble half_ln_m = dd_add_smaller(
+      f, dd_add_smaller(dd_mul(cube, third_coefficient),
+                        dd_add_smaller(dd_mul(fifth, fifth_coefficient),
+                                       dd_add_smaller(dd_mul(seventh, seventh_coefficient),
+                                                      DoubleDouble{rest, 0.0}))));
+  // ln d = k log2_hi (exact) + 2 half_ln_m + k log2_lo; |k ln 2| >= ln 2 > |ln m| unless k = 0.
+  const DoubleDouble sum = fast_two_sum(a.k * log2_hi, 2.0 * half_ln_m.hi);
   return fast_two_sum(sum.hi, sum.lo + (2.0 * half_ln_m.lo + a.k * log2_lo));
 }
 
