@@ -6,17 +6,18 @@
 //
 //   build/<dir>/benchmarks/damping_set --benchmark_repetitions=9
 //       --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true
-// prints, after Google Benchmark's table, one line per precision:
-//   ratio <name>/<baseline>: <median CPU time / the baseline's median>
+// prints, after Google Benchmark's table, a Markdown table: each precision's median CPU time,
+// its baseline's and their ratio (scripts/benchmark-damping-set.sh writes it into
+// docs/numerics.md).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <cstdio>
-#include <map>
-#include <string>
 #include <vector>
 
 #include <pointmass/damping.hpp>
+
+#include "support/bench_support.hpp"
 
 namespace {
 
@@ -59,36 +60,28 @@ BENCHMARK(c_library_log<double, float>)->Name("log(double) of a float");
 BENCHMARK(set_damping<double>)->Name("LogDamping<double>");
 BENCHMARK(c_library_log<long double, double>)->Name("logl of a double");
 
-/// Collects each run's median CPU time, to print the ratios after the table.
-class Medians : public benchmark::ConsoleReporter {
- public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& run : runs) {
-      if (run.run_type == Run::RT_Aggregate && run.aggregate_name == "median") {
-        medians[run.run_name.function_name] = run.GetAdjustedCPUTime();
-      }
-    }
-  }
-  std::map<std::string, double> medians;
-};
-
 }  // namespace
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  Medians reporter;
+  pointmass_benchmarks::MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
-  const auto ratio = [&](const char* name, const char* baseline) {
-    const auto a = reporter.medians.find(name);
-    const auto b = reporter.medians.find(baseline);
-    if (a != reporter.medians.end() && b != reporter.medians.end() && b->second > 0) {
-      std::printf("ratio %s/%s: %.2f\n", name, baseline, a->second / b->second);
-    }
+  // The table docs/numerics.md shows (scripts/benchmark-damping-set.sh writes it there).
+  const auto row = [&](const char* name, const char* set, const char* baseline,
+                       const char* before) {
+    const auto a = reporter.times().find(name);
+    const auto b = reporter.times().find(baseline);
+    if (a == reporter.times().end() || b == reporter.times().end() || !(b->second > 0)) return;
+    std::printf("| `%s` | %.1f ns | %s: %.1f ns | %.2f |\n", set, a->second, before, b->second,
+                a->second / b->second);
   };
-  ratio("LogDamping<float>", "log(double) of a float");
-  ratio("LogDamping<double>", "logl of a double");
+  std::printf("| set | median | the C library's log for the same precision before | ratio |\n");
+  std::printf("|---|---|---|---|\n");
+  row("LogDamping<float>", "damping::LogDamping<float>(d)", "log(double) of a float",
+      "`log` of the float as a double");
+  row("LogDamping<double>", "damping::LogDamping<double>(d)", "logl of a double",
+      "`logl` of the double (x87's 80 bits)");
   benchmark::Shutdown();
   return 0;
 }

@@ -15,7 +15,6 @@
 
 #include <cstdint>
 #include <cstdio>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -23,6 +22,7 @@
 #include <pointmass/extras/scenes.hpp>
 #include <pointmass/units.hpp>
 
+#include "support/bench_support.hpp"
 #include "units_scene.hpp"
 
 namespace pm = pointmass;
@@ -70,33 +70,20 @@ POINTMASS_PAIR("float None Kinematic", float, None, Kinematic);
 POINTMASS_PAIR("double Exact Exact", double, Exact, pm::position::Exact);
 
 /// The console table as usual, plus the SI/plain ratio of each configuration's median CPU
-/// time (or of its single run, without repetitions). CPU time, not wall time: on a machine
-/// shared with other work the wall time also counts the time the process waited.
-class RatioReporter : public benchmark::ConsoleReporter {
+/// time (or of its single run, without repetitions).
+class RatioReporter : public pointmass_benchmarks::MedianReporter {
  public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& run : runs) {
-      const bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
-      if (median || (run.run_type == Run::RT_Iteration && run.repetitions <= 1)) {
-        times_[run.run_name.function_name] = run.GetAdjustedCPUTime();
-      }
-    }
-  }
   void Finalize() override {
-    ConsoleReporter::Finalize();
-    for (const auto& [name, time] : times_) {
+    MedianReporter::Finalize();
+    for (const auto& [name, time] : times()) {
       if (name.rfind("plain/", 0) != 0) continue;
       const std::string configuration = name.substr(6);
-      const auto si_time = times_.find("si/" + configuration);
-      if (si_time == times_.end()) continue;
+      const auto si_time = times().find("si/" + configuration);
+      if (si_time == times().end()) continue;
       std::printf("ratio SI/plain %-24s %.3f\n", (configuration + ":").c_str(),
                   si_time->second / time);
     }
   }
-
- private:
-  std::map<std::string, double> times_;
 };
 
 }  // namespace

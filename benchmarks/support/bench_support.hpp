@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 // What the benchmark programs share: the step length as a run-time value, six staggered
 // arrays with the read-modify-write loop over them (the memory bound of a step of six arrays),
-// and main's run of Google Benchmark with the smoke test's filter.
+// main's run of Google Benchmark with the smoke test's filter, and a console reporter that keeps
+// each benchmark's median time for the ratios a program prints after the table.
 // bench_parallel.hpp adds the read-modify-write loop on the standard parallel algorithms.
 #pragma once
 
@@ -11,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <map>
 #include <new>
 #include <random>
 #include <string>
@@ -82,6 +84,28 @@ void bandwidth(benchmark::State& state, StaggeredArrays<R>& arrays) {
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
+
+/// The console table as usual, and each benchmark's median CPU time (or its single run's,
+/// without repetitions), by name, for the ratios a program prints after the table. CPU time,
+/// not wall time: on a machine shared with other work the wall time also counts the time the
+/// process waited.
+class MedianReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& run : runs) {
+      const bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
+      if (median || (run.run_type == Run::RT_Iteration && run.repetitions <= 1)) {
+        times_[run.run_name.function_name] = run.GetAdjustedCPUTime();
+      }
+    }
+  }
+  /// The median CPU times so far, by benchmark name.
+  const std::map<std::string, double>& times() const noexcept { return times_; }
+
+ private:
+  std::map<std::string, double> times_;
+};
 
 /// main's run: Google Benchmark with the program's arguments, and `smoke_filter` (a
 /// --benchmark_filter) as well when POINTMASS_BENCHMARK_SMOKE is set (the smoke tests,
