@@ -209,8 +209,9 @@ void BM_HandSparksLikeSystem(benchmark::State& state) {
 // The least a step can do with the storage, in two forms over the same columns (every
 // element the sparks' step changes: velocities, positions, and the pair's error terms):
 //   Touch::add    loads each element, adds a constant and stores it back (BM_Traffic): what
-//                 the bytes alone cost. A step that does little besides its loads and stores
-//                 costs about that ratio too.
+//                 the bytes alone cost. Also a floor: a step loads every element it changes
+//                 (the new value depends on the old one), computes with it at least once and
+//                 stores it, so no step of a storage takes fewer instructions per element.
 //   Touch::store  stores the constant, with nothing loaded (BM_Stores): the floor the bytes
 //                 set in the L1 cache, since no step of a storage takes less time than storing
 //                 its bytes.
@@ -288,11 +289,13 @@ POINTMASS_LARGE_WORLDS_BENCHMARK(BM_Step, CompensatedShots);
 POINTMASS_EACH_STORAGE(POINTMASS_LARGE_WORLDS_BENCHMARK, BM_HandSparks);
 POINTMASS_EACH_STORAGE(POINTMASS_LARGE_WORLDS_BENCHMARK, BM_HandSparksLikeSystem);
 POINTMASS_EACH_STORAGE(POINTMASS_LARGE_WORLDS_BENCHMARK, BM_Traffic);
-// In the L1 data cache (500 particles: 12 KB of float, 18 KB wide): the sparks' step and the
-// stores alone, for the floor that the bytes set there.
+// In the L1 data cache of any current processor (500 particles: 12 KB of float, 18 KB wide):
+// the sparks' step, the stores alone and the bytes alone (loaded, added to, stored back), for
+// the floors that the bytes set there.
 #define POINTMASS_IN_L1_BENCHMARK(...) BENCHMARK_TEMPLATE(__VA_ARGS__)->Arg(500)
 POINTMASS_EACH_SPARKS(POINTMASS_IN_L1_BENCHMARK, BM_Step);
 POINTMASS_EACH_STORAGE(POINTMASS_IN_L1_BENCHMARK, BM_Stores);
+POINTMASS_EACH_STORAGE(POINTMASS_IN_L1_BENCHMARK, BM_Traffic);
 
 }  // namespace
 

@@ -64,14 +64,18 @@ for kind, title in (("Sparks", "sparks: per-second damping, p + v t, gravity"),
                 cells = [f"{rate[f'{name}/{n}']:,.0f}" for n in sizes]
                 costs = [f"{rate[f'{base}/{n}'] / rate[f'{name}/{n}']:.2f}" for n in sizes]
                 print(f"| {prefix}: {label} | {size} | " + " | ".join(cells) + " | " + " | ".join(costs) + f" | {note} |")
-        # In the L1 data cache (500 particles): the step, and the stores alone (the floor the
-        # bytes set: no step of a storage takes less time than storing its bytes).
+        # In the L1 data cache (500 particles): the step, the stores alone and the bytes alone
+        # (the floors the bytes set: no step of a storage takes less time than storing its
+        # bytes, nor than loading, changing and storing each element it changes).
         l1 = [c["size"] for c in ctx.get("caches", []) if c.get("level") == 1 and c.get("type") == "Data"]
         l1_text = f"{l1[0] // 1024} KiB" if l1 else "the"
         print(f"\nIn the L1 data cache ({l1_text} a core here): 500 particles, 12 KB of float "
               "storage and 18 KB of either wide one. \"Stores alone\" writes every byte the step "
-              "changes once, with nothing loaded and nothing computed; its last row is the cost "
-              "against the all-float step of a step that took only its stores' time.\n")
+              "changes once, with nothing loaded and nothing computed; \"bytes alone\" loads "
+              "each of those elements, adds a constant and stores it back, the least a step "
+              "that changes them does. The rows \"a step of ...\" are the cost against the "
+              "all-float step of a wide step that took only that time: a floor, since no wide "
+              "step takes less.\n")
         print("| at 500 particles | float | `Precision<float, double>` | `Precision<float, Compensated<float>>` |")
         print("|---|---|---|---|")
         step = {v: rate[f"BM_Step<{v}Sparks>/500"] for v in ("Float", "Double", "Compensated")}
@@ -84,6 +88,12 @@ for kind, title in (("Sparks", "sparks: per-second damping, p + v t, gravity"),
               + " | ".join(f"{stores[v]:,.0f} ({stores['Float'] / stores[v]:.2f})" for v in order) + " |")
         print("| a step of its stores' time alone, cost against the all-float step | "
               + " | ".join(f"{step['Float'] / stores[v]:.2f}" for v in order) + " |")
+        traffic = {v: rate[f"BM_Traffic<Storage::{s}_positions>/500"]
+                   for v, s in (("Float", "float"), ("Double", "double"), ("Compensated", "compensated"))}
+        print("| bytes alone, M particles/s (against all-float's bytes alone) | "
+              + " | ".join(f"{traffic[v]:,.0f} ({traffic['Float'] / traffic[v]:.2f})" for v in order) + " |")
+        print("| a step of its bytes' time alone, cost against the all-float step | "
+              + " | ".join(f"{step['Float'] / traffic[v]:.2f}" for v in order) + " |")
     print()
 PY
 publish_table "$doc" cost "$cost"
