@@ -78,18 +78,17 @@ for kind, title in (("Sparks", "sparks: per-second damping, p + v t, gravity"),
               "step takes less.\n")
         print("| at 500 particles | float | `Precision<float, double>` | `Precision<float, Compensated<float>>` |")
         print("|---|---|---|---|")
-        step = {v: rate[f"BM_Step<{v}Sparks>/500"] for v in ("Float", "Double", "Compensated")}
-        stores = {v: rate[f"BM_Stores<Storage::{s}_positions>/500"]
-                  for v, s in (("Float", "float"), ("Double", "double"), ("Compensated", "compensated"))}
-        order = ("Float", "Double", "Compensated")
+        storage = {"Float": "float", "Double": "double", "Compensated": "compensated"}
+        order = tuple(storage)
+        step = {v: rate[f"BM_Step<{v}Sparks>/500"] for v in order}
+        stores = {v: rate[f"BM_Stores<Storage::{storage[v]}_positions>/500"] for v in order}
+        traffic = {v: rate[f"BM_Traffic<Storage::{storage[v]}_positions>/500"] for v in order}
         print("| step, M particle-steps/s (cost against all-float) | "
               + " | ".join(f"{step[v]:,.0f} ({step['Float'] / step[v]:.2f})" for v in order) + " |")
         print("| stores alone, M particles/s (against all-float's stores) | "
               + " | ".join(f"{stores[v]:,.0f} ({stores['Float'] / stores[v]:.2f})" for v in order) + " |")
         print("| a step of its stores' time alone, cost against the all-float step | "
               + " | ".join(f"{step['Float'] / stores[v]:.2f}" for v in order) + " |")
-        traffic = {v: rate[f"BM_Traffic<Storage::{s}_positions>/500"]
-                   for v, s in (("Float", "float"), ("Double", "double"), ("Compensated", "compensated"))}
         print("| bytes alone, M particles/s (against all-float's bytes alone) | "
               + " | ".join(f"{traffic[v]:,.0f} ({traffic['Float'] / traffic[v]:.2f})" for v in order) + " |")
         print("| a step of its bytes' time alone, cost against the all-float step | "
