@@ -270,9 +270,11 @@ class KokkosSystem {
   /// The raw arrays in MemorySpace, for loops of your own over System::step_particle.
   const Arrays& arrays() const noexcept { return arrays_; }
   /// Array C of the live particles, as an unmanaged View in MemorySpace.
+  // clang-format off
   template <Column C>
-    requires System::template stores<C>
+    requires(System::template stores<C>)
   View<C> view() const noexcept {
+  // clang-format on
     return View<C>(arrays_.*(Layout::template entry<C>::member), size());
   }
 

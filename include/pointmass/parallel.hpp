@@ -107,7 +107,7 @@ bool step_chunks(ExecutionPolicy&& policy, System& system, R duration) {
 /// or a Precision (precision.hpp) whose positions are stored wider; `duration` is in the
 /// system's arithmetic type (`real`), as system.step's is.
 template <class ExecutionPolicy, class S, class D, class P, class... Features>
-  requires std::is_execution_policy_v<std::remove_cvref_t<ExecutionPolicy>>
+  requires(std::is_execution_policy_v<std::remove_cvref_t<ExecutionPolicy>>)
 void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system,
           typename ParticleSystem<S, D, P, Features...>::real duration) {
   if (detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration)) {
@@ -117,12 +117,14 @@ void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system
 
 /// As step(policy, system, duration), calling on_expire(i) for each particle whose lifetime is
 /// over, on the calling thread, before its removal (ParticleSystem::step(t, on_expire)).
+// clang-format off
 template <class ExecutionPolicy, class S, class D, class P, class... Features, class OnExpire>
   requires(std::is_execution_policy_v<std::remove_cvref_t<ExecutionPolicy>> &&
            ParticleSystem<S, D, P, Features...>::has_lifetime &&
            std::is_invocable_v<OnExpire&, std::size_t>)
 void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system,
           typename ParticleSystem<S, D, P, Features...>::real duration, OnExpire&& on_expire) {
+// clang-format on
   if (detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration)) {
     detail::SystemAccess::finish_step(system, duration, on_expire);
   }

@@ -76,12 +76,14 @@ using SystemFacets = SystemHandOff<SystemInterpolation<
     SystemLifetime<SystemForceAccumulator<SystemHandles<SystemColumns<State>>>>>>;
 }  // namespace detail
 
+// clang-format off
 template <class S, DampingPolicy D = damping::PerSecond, class P = position::Euler,
           class... Features>
-  requires(Real<S> || PrecisionChoice<S>) && (detail::is_feature_v<Features> && ...)
+  requires((Real<S> || PrecisionChoice<S>) && (detail::is_feature_v<Features> && ...))
 class ParticleSystem
     : public detail::SystemKernel<real_of_t<S>, D, P, detail::SystemLayout<S, D, Features...>>,
       public detail::SystemFacets<detail::SystemStateBase<S, D, P, Features...>> {
+// clang-format on
   using State = detail::SystemState<S, D, P, Features...>;
   using Facets = detail::SystemFacets<detail::SystemStateBase<S, D, P, Features...>>;
   using R = real_of_t<S>;
@@ -183,9 +185,11 @@ class ParticleSystem
     return acceleration_;
   }
   /// The damping of every particle, in [0, 1] (per second or per frame, as the policy says).
+  // clang-format off
   void set_damping(R damping)
     requires(stores_damping && !per_particle_damping)
   {
+  // clang-format on
     if (detail::check_damping("set_damping", damping)) {
       damping_ = damping_state(damping);
       State::forget_factors();
@@ -211,10 +215,12 @@ class ParticleSystem
     return State::append(position, velocity);
   }
   /// Adds a particle with a value for each user column, in the order of the features.
+  // clang-format off
   template <class... Values>
     requires(sizeof...(Values) > 0 && sizeof...(Values) == Layout::user_column_count)
   std::size_t spawn(const Vector3<position_value>& position, const Vector3<R>& velocity,
                     const Values&... values) {
+  // clang-format on
     const std::size_t i = spawn(position, velocity);
     if (i != npos) {
       State::store_user_columns(i, std::make_index_sequence<sizeof...(Values)>{}, values...);
@@ -232,7 +238,7 @@ class ParticleSystem
   /// spawn(arguments...), returning the new particle's handle (a default Handle, which
   /// finds nothing, when the input was rejected).
   template <class... Arguments>
-    requires has_handles
+    requires(has_handles)
   Handle spawn_handle(const Arguments&... arguments) {
     const std::size_t i = spawn(arguments...);
     return i == npos ? Handle{} : this->handle(i);
@@ -389,9 +395,11 @@ class ParticleSystem
   /// Spawning inside the callback is allowed and immediate (the new particles are stepped
   /// from the next step on); removing particles (kill, kill_if, clear) or stepping (step,
   /// finish_step) is refused.
+  // clang-format off
   template <class OnExpire>
     requires(has_lifetime && std::is_invocable_v<OnExpire&, std::size_t>)
   void step(R duration, OnExpire&& on_expire) {
+  // clang-format on
     if constexpr (PositionPolicyFor<P, D>) {
       if (State::walk(duration)) State::expire(on_expire);
     }
@@ -429,9 +437,11 @@ class ParticleSystem
     State::expire(none, "finish_step");
   }
   /// finish_step calling on_expire(i) for each expiring particle before its removal.
+  // clang-format off
   template <class OnExpire>
     requires(has_lifetime && std::is_invocable_v<OnExpire&, std::size_t>)
   void finish_step(OnExpire&& on_expire) {
+  // clang-format on
     arrays_changed();
     State::expire(on_expire, "finish_step");
   }

@@ -115,7 +115,7 @@ struct Exact {
   template <class D>
   static constexpr bool exact_for_constant_acceleration = D::exact_for_constant_acceleration;
   template <class P, class V, class A, class T, class F>
-    requires detail::ExactFactors<F>
+    requires(detail::ExactFactors<F>)
   POINTMASS_HD static constexpr P position(const P& p0, const V& v0, const V&, const A& a,
                                            const T& t, const F& factors) noexcept {
     if constexpr (std::is_empty_v<F>) {

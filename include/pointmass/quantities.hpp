@@ -73,12 +73,14 @@ struct QuantityPositions {
   using precision = typename Q::real;
   using type = typename Q::length;
 };
+// clang-format off
 template <class Q>
   requires requires {
     typename Q::position_precision;
     typename Q::position;
   }
 struct QuantityPositions<Q> {
+// clang-format on
   using precision = typename Q::position_precision;
   using type = typename Q::position;
 };

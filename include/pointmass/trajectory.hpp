@@ -107,7 +107,7 @@ R bisect(const Flight& flight, R value, R lo, R hi) noexcept {
 /// The particle's position and velocity `time` seconds from now (time finite and >= 0), under
 /// its acceleration and damping, without stepping it: particle.integrate(time) on a copy.
 template <Real R, class D>
-  requires detail::trajectory_damping_v<D>
+  requires(detail::trajectory_damping_v<D>)
 TrajectoryState<R> state_at(const Particle<R, D, position::Exact>& particle, R time) {
   if (!detail::check_duration("state_at", "time", time)) {
     return {particle.position(), particle.velocity()};
@@ -120,12 +120,12 @@ TrajectoryState<R> state_at(const Particle<R, D, position::Exact>& particle, R t
   return {p, v};
 }
 template <Real R, class D>
-  requires detail::trajectory_damping_v<D>
+  requires(detail::trajectory_damping_v<D>)
 Vector3<R> position_at(const Particle<R, D, position::Exact>& particle, R time) {
   return state_at(particle, time).position;
 }
 template <Real R, class D>
-  requires detail::trajectory_damping_v<D>
+  requires(detail::trajectory_damping_v<D>)
 Vector3<R> velocity_at(const Particle<R, D, position::Exact>& particle, R time) {
   return state_at(particle, time).velocity;
 }
@@ -133,7 +133,7 @@ Vector3<R> velocity_at(const Particle<R, D, position::Exact>& particle, R time) 
 /// The first time t >= 0 at which the particle's coordinate `axis` equals `value` (finite),
 /// or std::nullopt when it never does (see the header's comment). 0 when it is there now.
 template <Real R, class D>
-  requires detail::trajectory_damping_v<D>
+  requires(detail::trajectory_damping_v<D>)
 std::optional<R> time_to_reach(const Particle<R, D, position::Exact>& particle, Axis axis,
                                R value) {
   if (!detail::check_finite("time_to_reach", "value", value)) return std::nullopt;

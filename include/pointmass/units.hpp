@@ -175,9 +175,11 @@ inline constexpr bool always_false_v = false;
 /// A particle whose every input and output is an SI quantity of R (see the file comment).
 /// BasicParticle over SiQuantities<R>, plus one overload per setter that turns a wrong
 /// argument type into a one-line error message. S is R or a Precision<R, Position>.
+// clang-format off
 template <class S, DampingPolicy D = damping::PerSecond, class P = position::Euler>
-  requires Real<S> || PrecisionChoice<S>
+  requires(Real<S> || PrecisionChoice<S>)
 class Particle : public BasicParticle<SiQuantities<canonical_precision_t<S>>, D, P> {
+// clang-format on
   using Base = BasicParticle<SiQuantities<canonical_precision_t<S>>, D, P>;
   using R = typename Base::real;
 

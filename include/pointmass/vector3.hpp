@@ -74,15 +74,19 @@ inline constexpr bool is_vector3<Vector3<T>> = true;
 }  // namespace detail
 
 /// The traits of a type with x, y and z data members of one type (glm::vec3, a user's struct).
+// clang-format off
 template <class V>
-  requires detail::HasXyzMembers<V> && (!detail::is_vector3<V>)
+  requires(detail::HasXyzMembers<V> && (!detail::is_vector3<V>))
 struct VectorTraits<V> {
+// clang-format on
   using value_type = std::remove_cvref_t<decltype(std::declval<const V&>().x)>;
   POINTMASS_HD static constexpr value_type x(const V& v) noexcept { return v.x; }
   POINTMASS_HD static constexpr value_type y(const V& v) noexcept { return v.y; }
   POINTMASS_HD static constexpr value_type z(const V& v) noexcept { return v.z; }
+  // clang-format off
   POINTMASS_HD static constexpr V make(value_type x, value_type y, value_type z)
-    requires requires { V{x, y, z}; }
+    requires(requires { V{x, y, z}; })
+  // clang-format on
   {
     return V{x, y, z};
   }
@@ -141,7 +145,7 @@ struct Vector3 {
   // --- to and from the user's vector types (VectorTraits, above) -------------------------------
   /// From a user's vector: implicit when every number converts exactly, explicit otherwise.
   template <class V>
-    requires detail::UserVectorOf<V, T>
+    requires(detail::UserVectorOf<V, T>)
   POINTMASS_HD constexpr explicit(
       !detail::converts_exactly_v<typename VectorTraits<V>::value_type, T>)
       Vector3(const V& v) noexcept
@@ -149,10 +153,12 @@ struct Vector3 {
         y(static_cast<T>(VectorTraits<V>::y(v))),
         z(static_cast<T>(VectorTraits<V>::z(v))) {}
   /// To a user's vector: implicit when every number converts exactly, explicit otherwise.
+  // clang-format off
   template <class V>
-    requires detail::MakeableUserVectorOf<V, T>
+    requires(detail::MakeableUserVectorOf<V, T>)
   POINTMASS_HD constexpr explicit(
       !detail::converts_exactly_v<T, typename VectorTraits<V>::value_type>) operator V() const {
+  // clang-format on
     using U = typename VectorTraits<V>::value_type;
     return VectorTraits<V>::make(static_cast<U>(x), static_cast<U>(y), static_cast<U>(z));
   }

@@ -25,8 +25,10 @@ struct CountingFactors {
     ++factor_calls;
     return D::factors(state, t);
   }
+  // clang-format off
   template <Real R, class T>
-    requires requires(const State<R>& state, const T& t) { D::scalar_factors(state, t); }
+    requires(requires(const State<R>& state, const T& t) { D::scalar_factors(state, t); })
+  // clang-format on
   static Factors<R> scalar_factors(const State<R>& state, const T& t) noexcept {
     ++factor_calls;
     return D::scalar_factors(state, t);

@@ -40,10 +40,12 @@ concept HasUpdateForce = requires(G& g, B& body, typename B::real t) {
 /// and a batch (`apply`) get the same bits; a force beyond the range of the number type
 /// (docs/forces.md, "Ranges") is reported through the contract and not added. A generator
 /// with its own `update_force` member is called through it.
+// clang-format off
 template <class G, class B>
-  requires HasUpdateForce<G, B> ||
-           (PlainBody<B, typename B::real> && FieldGenerator<G, typename B::real>)
+  requires(HasUpdateForce<G, B> ||
+           (PlainBody<B, typename B::real> && FieldGenerator<G, typename B::real>))
 constexpr void update_force(G& generator, B& body, typename B::real duration) {
+// clang-format on
 #if POINTMASS_CHECKS
   if (!pointmass::detail::check_duration("forces::update_force", duration)) return;
 #endif
@@ -94,16 +96,20 @@ constexpr void apply(const G& generator, B&& bodies,
   apply(generator, bodies, duration);
 }
 /// A temporary particle or system would take the force and be gone with it: one sentence.
+// clang-format off
 template <class G, class B>
   requires(!std::is_lvalue_reference_v<B> && !BodyView<B>)
 void update_force(G&, B&&, typename std::remove_cvref_t<B>::real) {
+// clang-format on
   static_assert(sizeof(B) == 0,
                 "forces::update_force: this body is a temporary, so the force added to it would "
                 "be lost; pass the particle itself (a named object)");
 }
+// clang-format off
 template <class G, class B>
   requires(!std::is_lvalue_reference_v<B> && !BodyView<B>)
 void apply(const G&, B&&, typename std::remove_cvref_t<B>::real) {
+// clang-format on
   static_assert(sizeof(B) == 0,
                 "forces::apply: these bodies are a temporary, so the forces added to them would "
                 "be lost; pass the system itself (a named object)");

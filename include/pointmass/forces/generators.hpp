@@ -238,7 +238,7 @@ class BasicSpring : public SpringParameters<typename Body::real, IsBungee> {
   constexpr BasicSpring(const Body& other, real stiffness, real rest_length)
       : SpringParameters<real, IsBungee>(stiffness, rest_length), other_(&other) {}
   template <class Other>
-    requires temporary_other<Other>
+    requires(temporary_other<Other>)
   BasicSpring(Other&&, real, real) {
     static_assert(!temporary_other<Other>,
                   "Spring keeps the address of the other body, and the other body is a "
@@ -248,7 +248,7 @@ class BasicSpring : public SpringParameters<typename Body::real, IsBungee> {
   constexpr const Body* other() const noexcept { return other_; }
   constexpr void set_other(const Body& other) noexcept { other_ = &other; }
   template <class Other>
-    requires temporary_other<Other>
+    requires(temporary_other<Other>)
   void set_other(Other&&) {
     static_assert(!temporary_other<Other>,
                   "Spring::set_other keeps the address of the other body, and the other body "
@@ -422,11 +422,13 @@ constexpr void apply_links(const BasicLinkSprings<typename B::real, IsBungee>& s
 }
 /// A temporary adapter or view (`forces::relative_to(chain, anchor)`): the forces land in the
 /// storage it refers to.
+// clang-format off
 template <class B, bool IsBungee>
   requires(BodyView<B> && !std::is_lvalue_reference_v<B> && Bodies<std::remove_cvref_t<B>>)
 constexpr void apply_links(
     const BasicLinkSprings<typename std::remove_cvref_t<B>::real, IsBungee>& springs,
     std::span<const Link> links, B&& bodies) {
+// clang-format on
   apply_links(springs, links, bodies);
 }
 

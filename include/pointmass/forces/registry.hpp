@@ -43,9 +43,11 @@ concept GeneratorFor = requires(G& g, P& p, typename P::real t) { forces::update
 /// registrations that existed when it began and are not removed before their turn; one added
 /// during the pass first acts in the next pass; a removed generator the registry owns is
 /// destroyed after the pass.
+// clang-format off
 template <class P, class... Known>
   requires(GeneratorFor<Known, P> && ...)
 class ForceRegistry {
+// clang-format on
  public:
   using particle_type = P;
   using real = typename P::real;

@@ -61,14 +61,16 @@ class SystemColumns : public Base {
   /// set_damping(i, d) writes them; so is features::Handles' handle_slot (the table's own
   /// index: spawn and kill keep it).
   template <Column C>
-    requires stores<C>
+    requires(stores<C>)
   std::span<std::conditional_t<Layout::template read_only<C>, const element_t<C>, element_t<C>>>
   column() noexcept {
     return {this->arrays().*(Layout::template entry<C>::member), this->size()};
   }
+  // clang-format off
   template <Column C>
-    requires stores<C>
+    requires(stores<C>)
   std::span<const element_t<C>> column() const noexcept {
+  // clang-format on
     return {this->arrays().*(Layout::template entry<C>::member), this->size()};
   }
   // The arrays users read most, by name.
@@ -95,23 +97,27 @@ class SystemColumns : public Base {
 
   /// The user column tagged Tag, over the live particles.
   template <class Tag>
-    requires has_column<Tag>
+    requires(has_column<Tag>)
   std::span<user_element_t<Tag>> column() noexcept {
     return {user_pointer<Tag>(), this->size()};
   }
+  // clang-format off
   template <class Tag>
-    requires has_column<Tag>
+    requires(has_column<Tag>)
   std::span<const user_element_t<Tag>> column() const noexcept {
+  // clang-format on
     return {user_pointer<Tag>(), this->size()};
   }
   /// Particle i's value in the user column tagged Tag.
+  // clang-format off
   template <class Tag>
-    requires has_column<Tag>
+    requires(has_column<Tag>)
   user_element_t<Tag> column(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
+  // clang-format on
     return this->valid_index("column", i) ? user_pointer<Tag>()[i] : user_element_t<Tag>{};
   }
   template <class Tag>
-    requires has_column<Tag>
+    requires(has_column<Tag>)
   void set_column(std::size_t i, const user_element_t<Tag>& value) {
     if (detail::check_index("set_column", i, this->size())) user_pointer<Tag>()[i] = value;
   }

@@ -41,17 +41,21 @@ class SystemHandOff : public Base {
   /// (size() - 1) * stride + 3 elements; a shorter one is reported and nothing is written.
   /// T is a floating-point type: an integer cannot hold every position, and converting one
   /// beyond its range is undefined, so such a buffer does not compile.
+  // clang-format off
   template <class T>
-    requires std::floating_point<T>
+    requires(std::floating_point<T>)
   void copy_positions(std::span<T> out, std::size_t stride = 3) const {
+  // clang-format on
     this->copy_strided("copy_positions", R(1), out, stride);
   }
   /// Copies the positions into vectors with x, y, z members (glm::vec3, ...): out[i] for
   /// particle i; `out` needs size() elements. Their members are floating-point numbers.
+  // clang-format off
   template <class V>
     requires(!std::is_arithmetic_v<V> && requires(V& v) { v.x = v.y = v.z; } &&
              std::floating_point<std::remove_cvref_t<decltype(std::declval<V&>().x)>>)
   void copy_positions(std::span<V> out) const {
+  // clang-format on
     this->copy_vectors("copy_positions", R(1), out);
   }
   /// Particle i's position relative to `origin` (a camera), as float: from the whole

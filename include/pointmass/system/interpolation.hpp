@@ -64,18 +64,22 @@ class SystemInterpolation : public Base {
   }
   /// As copy_positions (system/hand_off.hpp), with the positions at the fraction alpha of
   /// the last step.
+  // clang-format off
   template <class T>
     requires(Base::Layout::has_interpolation && std::floating_point<T>)
   void copy_interpolated_positions(R alpha, std::span<T> out, std::size_t stride = 3) const {
+  // clang-format on
     if (detail::check_fraction("copy_interpolated_positions", "alpha", alpha)) {
       this->copy_strided("copy_interpolated_positions", alpha, out, stride);
     }
   }
+  // clang-format off
   template <class V>
     requires(Base::Layout::has_interpolation && !std::is_arithmetic_v<V> &&
              requires(V& v) { v.x = v.y = v.z; } &&
              std::floating_point<std::remove_cvref_t<decltype(std::declval<V&>().x)>>)
   void copy_interpolated_positions(R alpha, std::span<V> out) const {
+  // clang-format on
     if (detail::check_fraction("copy_interpolated_positions", "alpha", alpha)) {
       this->copy_vectors("copy_interpolated_positions", alpha, out);
     }
