@@ -166,7 +166,11 @@ void BM_HandStruct(benchmark::State& state) {
   const auto s = starts<R>(count);
   const R t = duration<R>();
   for (std::size_t i = 0; i < count; ++i) {
-    particles[i] = {s[i].position, R(1) / s[i].mass, s[i].velocity, gravity_vector<R>, {},
+    particles[i] = {s[i].position,
+                    R(1) / s[i].mass,
+                    s[i].velocity,
+                    gravity_vector<R>,
+                    {},
                     real_pow(damping_value<R>, t)};
   }
   const std::vector<HandParticle<R>> start = particles;
@@ -213,8 +217,15 @@ void BM_HandSameData(benchmark::State& state) {
   std::vector<HandSameData<R>> particles(count);
   const auto s = starts<R>(count);
   for (std::size_t i = 0; i < count; ++i) {
-    particles[i] = {s[i].position, R(1) / s[i].mass, s[i].velocity, gravity_vector<R>, {},
-                    damping_value<R>, detail::split_log(damping_value<R>), R(-1), R(1)};
+    particles[i] = {s[i].position,
+                    R(1) / s[i].mass,
+                    s[i].velocity,
+                    gravity_vector<R>,
+                    {},
+                    damping_value<R>,
+                    detail::split_log(damping_value<R>),
+                    R(-1),
+                    R(1)};
   }
   const R t = duration<R>();
   const std::vector<HandSameData<R>> start = particles;
@@ -285,9 +296,9 @@ void BM_PowAlone(benchmark::State& state) {
 
 template <class R>
 struct FullFeatured {
-  using System = ParticleSystem<R, damping::PerSecond, position::Euler,
-                                features::PerParticleDamping, features::PerParticleAcceleration,
-                                features::ForceAccumulator>;
+  using System =
+      ParticleSystem<R, damping::PerSecond, position::Euler, features::PerParticleDamping,
+                     features::PerParticleAcceleration, features::ForceAccumulator>;
 };
 template <class R>
 struct Lean {

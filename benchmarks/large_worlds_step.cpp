@@ -122,7 +122,7 @@ struct HandArrays {
     const std::size_t float_span = (n * sizeof(float) + 4095) / 4096 * 4096 + 448;
     const std::size_t position_span = (n * sizeof(P) + 4095) / 4096 * 4096 + 448;
     block = static_cast<std::byte*>(
-        ::operator new(3 * position_span + (3 + errors) * float_span, std::align_val_t{64}));
+        ::operator new (3 * position_span + (3 + errors) * float_span, std::align_val_t{64}));
     std::mt19937 engine(1);
     std::uniform_real_distribution<float> value(-10.0f, 10.0f);
     for (std::size_t k = 0; k < 3; ++k) {
@@ -140,7 +140,7 @@ struct HandArrays {
   }
   HandArrays(const HandArrays&) = delete;
   HandArrays& operator=(const HandArrays&) = delete;
-  ~HandArrays() { ::operator delete(block, std::align_val_t{64}); }
+  ~HandArrays() { ::operator delete (block, std::align_val_t{64}); }
 
   std::size_t n;
   std::byte* block;
@@ -247,8 +247,8 @@ void touch_loop(benchmark::State& state) {
   // Alternating signs keep the values where they started.
   float c = duration<float>();
   for (auto _ : state) {
-    touch_columns<S, T>(a.p[0], a.p[1], a.p[2], a.e[0], a.e[1], a.e[2], a.v[0], a.v[1], a.v[2],
-                        a.n, c);
+    touch_columns<S, T>(a.p[0], a.p[1], a.p[2], a.e[0], a.e[1], a.e[2], a.v[0], a.v[1], a.v[2], a.n,
+                        c);
     c = -c;
     benchmark::ClobberMemory();
   }
@@ -277,9 +277,9 @@ using CompensatedShots =
   REGISTER(benchmark, FloatSparks);                \
   REGISTER(benchmark, DoubleSparks);               \
   REGISTER(benchmark, CompensatedSparks)
-#define POINTMASS_EACH_STORAGE(REGISTER, benchmark)       \
-  REGISTER(benchmark, Storage::float_positions);          \
-  REGISTER(benchmark, Storage::double_positions);         \
+#define POINTMASS_EACH_STORAGE(REGISTER, benchmark) \
+  REGISTER(benchmark, Storage::float_positions);    \
+  REGISTER(benchmark, Storage::double_positions);   \
   REGISTER(benchmark, Storage::compensated_positions)
 
 POINTMASS_EACH_SPARKS(POINTMASS_LARGE_WORLDS_BENCHMARK, BM_Step);

@@ -95,8 +95,8 @@ using FloatShots = ParticleSystem<float, damping::Exact, position::Exact>;
 
 void sizes(benchmark::internal::Benchmark* b) { b->Arg(16)->Arg(64)->Arg(256)->Arg(512); }
 
-#define POINTMASS_SMALL_SYSTEMS(System)                  \
-  BENCHMARK_TEMPLATE(BM_Step, System)->Apply(sizes);     \
+#define POINTMASS_SMALL_SYSTEMS(System)              \
+  BENCHMARK_TEMPLATE(BM_Step, System)->Apply(sizes); \
   BENCHMARK_TEMPLATE(BM_Afresh, System)->Apply(sizes)
 POINTMASS_SMALL_SYSTEMS(FloatSparks);
 POINTMASS_SMALL_SYSTEMS(DoubleSparks);

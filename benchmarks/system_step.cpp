@@ -120,8 +120,7 @@ void BM_SystemParallel(benchmark::State& state) {
 // written by hand.
 template <class R>
 void hand_step(R* __restrict px, R* __restrict py, R* __restrict pz, R* __restrict vx,
-               R* __restrict vy, R* __restrict vz, std::size_t n, R ax, R ay, R az, R t,
-               R kept) {
+               R* __restrict vy, R* __restrict vz, std::size_t n, R ax, R ay, R az, R t, R kept) {
   for (std::size_t i = 0; i < n; ++i) {
     const R x = vx[i], y = vy[i], z = vz[i];
     vx[i] = x * kept + ax * t;
@@ -139,12 +138,12 @@ template <class R>
 void hand_step_backward(R* const* a, std::size_t n, R ax, R ay, R az, R t, R kept) {
   constexpr std::size_t chunk = ParticleSystem<R>::backward_chunk;
   std::size_t end = n - n % chunk;
-  hand_step(a[0] + end, a[1] + end, a[2] + end, a[3] + end, a[4] + end, a[5] + end, n - end,
-            ax, ay, az, t, kept);
+  hand_step(a[0] + end, a[1] + end, a[2] + end, a[3] + end, a[4] + end, a[5] + end, n - end, ax, ay,
+            az, t, kept);
   while (end != 0) {
     end -= chunk;
-    hand_step(a[0] + end, a[1] + end, a[2] + end, a[3] + end, a[4] + end, a[5] + end, chunk,
-              ax, ay, az, t, kept);
+    hand_step(a[0] + end, a[1] + end, a[2] + end, a[3] + end, a[4] + end, a[5] + end, chunk, ax, ay,
+              az, t, kept);
   }
 }
 
@@ -160,9 +159,8 @@ void hand_loop(benchmark::State& state) {
   const R t = duration<R>();
   const Vector3<R> g = gravity<R>();
   R** a = arrays.array;
-  const bool alternating =
-      walk == Walk::always_alternating ||
-      (walk == Walk::like_the_system && ParticleSystem<R>::alternates(n));
+  const bool alternating = walk == Walk::always_alternating ||
+                           (walk == Walk::like_the_system && ParticleSystem<R>::alternates(n));
   const std::vector<R> start_x(a[3], a[3] + n), start_y(a[4], a[4] + n),
       start_z(a[5], a[5] + n);  // the velocities, to put back
   std::int64_t steps = 0;
@@ -240,7 +238,8 @@ using PerFrame = ParticleSystem<R, damping::PerFrame>;
 template <class R>
 using WithLifetime = ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime>;
 template <class R>
-using WithForces = ParticleSystem<R, damping::PerSecond, position::Euler, features::ForceAccumulator>;
+using WithForces =
+    ParticleSystem<R, damping::PerSecond, position::Euler, features::ForceAccumulator>;
 template <class R>
 using WithAcceleration =
     ParticleSystem<R, damping::PerSecond, position::Euler, features::PerParticleAcceleration>;
@@ -256,8 +255,8 @@ void around_limit(benchmark::internal::Benchmark* b) {
   b->Arg(1000)->Arg(100000)->Arg(300000)->Arg(1000000)->Arg(3000000);
 }
 
-#define POINTMASS_BENCH_BOTH(function, args)                              \
-  BENCHMARK_TEMPLATE(function, float)->Apply(args);                       \
+#define POINTMASS_BENCH_BOTH(function, args)        \
+  BENCHMARK_TEMPLATE(function, float)->Apply(args); \
   BENCHMARK_TEMPLATE(function, double)->Apply(args)
 
 POINTMASS_BENCH_BOTH(BM_HandStaggered, sizes);
@@ -296,10 +295,9 @@ using Interpolated =
     ParticleSystem<R, damping::PerSecond, position::Euler, features::Interpolation>;
 struct GameColourTag {};
 template <class R>
-using GameSparks =
-    ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
-                   features::Interpolation, features::Handles,
-                   features::Column<GameColourTag, std::uint32_t>>;
+using GameSparks = ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
+                                  features::Interpolation, features::Handles,
+                                  features::Column<GameColourTag, std::uint32_t>>;
 struct Vertex {  // a renderer's vertex: position, then a colour (interleaved)
   float x, y, z;
   std::uint32_t colour;
@@ -334,13 +332,21 @@ void BM_CopyOut(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 template <class R>
-void BM_CopyPacked(benchmark::State& state) { BM_CopyOut<R, 0>(state); }
+void BM_CopyPacked(benchmark::State& state) {
+  BM_CopyOut<R, 0>(state);
+}
 template <class R>
-void BM_CopyVec3(benchmark::State& state) { BM_CopyOut<R, 1>(state); }
+void BM_CopyVec3(benchmark::State& state) {
+  BM_CopyOut<R, 1>(state);
+}
 template <class R>
-void BM_CopyStrided(benchmark::State& state) { BM_CopyOut<R, 2>(state); }
+void BM_CopyStrided(benchmark::State& state) {
+  BM_CopyOut<R, 2>(state);
+}
 template <class R>
-void BM_CopyInterpolated(benchmark::State& state) { BM_CopyOut<R, 3>(state); }
+void BM_CopyInterpolated(benchmark::State& state) {
+  BM_CopyOut<R, 3>(state);
+}
 
 // A renderer's hand-off from wide positions (precision.hpp): positions_relative_to a camera
 // near the particles, which are spread over a kilometre 1e6 m out, into {x, y, z} floats;
@@ -352,8 +358,7 @@ void BM_Relative(benchmark::State& state) {
   std::mt19937 engine(5);
   std::uniform_real_distribution<double> spread(-500, 500);
   for (std::size_t i = 0; i < n; ++i) {
-    system.spawn(Vector3<double>{1e6 + spread(engine), spread(engine), 1e6 + spread(engine)},
-                 {});
+    system.spawn(Vector3<double>{1e6 + spread(engine), spread(engine), 1e6 + spread(engine)}, {});
   }
   const Vector3<double> camera{1e6 + 0.3, 1.7, 1e6 - 2.1};
   std::vector<Vector3<float>> offsets(n);

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include <pointmass/particle.hpp>
 #include <pointmass/extras/scenes.hpp>
+#include <pointmass/particle.hpp>
 #include <pointmass/units.hpp>
 
 #include "support/bench_support.hpp"
@@ -50,8 +50,8 @@ void plain(benchmark::State& state) {
 }
 template <class R, class D, class P>
 void with_units(benchmark::State& state) {
-  run_scene<pm::units::Particle<R, D, P>, R>(
-      state, (R(1) / R(30)) * si::seconds, pm::Vector3<R>{R(0.5), R(-2), R(1)} * si::newtons);
+  run_scene<pm::units::Particle<R, D, P>, R>(state, (R(1) / R(30)) * si::seconds,
+                                             pm::Vector3<R>{R(0.5), R(-2), R(1)} * si::newtons);
 }
 
 using pm::damping::Exact;
@@ -60,7 +60,7 @@ using pm::damping::PerSecond;
 using pm::position::Euler;
 using pm::position::Kinematic;
 
-#define POINTMASS_PAIR(name, ...)                                                      \
+#define POINTMASS_PAIR(name, ...)                                                             \
   BENCHMARK_TEMPLATE(plain, __VA_ARGS__)->Name("plain/" name)->Unit(benchmark::kMicrosecond); \
   BENCHMARK_TEMPLATE(with_units, __VA_ARGS__)->Name("si/" name)->Unit(benchmark::kMicrosecond)
 

@@ -51,11 +51,10 @@ namespace {
 void report_steps(benchmark::State& state, double steps) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(steps));
   state.counters["steps"] = steps;
-  state.counters["per_step"] = benchmark::Counter(
-      steps * static_cast<double>(state.iterations()),
-      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["per_step"] =
+      benchmark::Counter(steps * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
-
 
 using namespace pointmass;
 namespace accuracy = pointmass::accuracy;
@@ -104,9 +103,9 @@ template <class S, class D, class P>
 ScalarScene<S, D, P> scalar_scene(bool spring) {
   using R = real_of_t<S>;
   ScalarScene<S, D, P> scene;
-  const auto scenes = spring ? std::vector<accuracy::Scene>{accuracy::spring(false, 10),
-                                                            accuracy::spring(true, 10)}
-                             : accuracy::ballistic_scenes();
+  const auto scenes =
+      spring ? std::vector<accuracy::Scene>{accuracy::spring(false, 10), accuracy::spring(true, 10)}
+             : accuracy::ballistic_scenes();
   const std::size_t copies = spring ? copies_per_spring : copies_per_scene;
   for (std::size_t copy = 0; copy < copies; ++copy) {
     for (const auto& s : scenes) {
@@ -166,8 +165,8 @@ ParticleSystem<S, D, P> sparks() {
   }
   system.set_acceleration({R(0), R(-9.807), R(0)});
   if constexpr (ParticleSystem<S, D, P>::stores_damping) {
-    const double d = std::is_same_v<D, damping::PerFrame> ? std::pow(0.99, nominal_frame_time)
-                                                          : 0.99;
+    const double d =
+        std::is_same_v<D, damping::PerFrame> ? std::pow(0.99, nominal_frame_time) : 0.99;
     system.set_damping(static_cast<R>(d));
   }
   return system;
@@ -218,20 +217,21 @@ struct HandArrays {
   static constexpr std::size_t count = 12;
   HandArrays(std::size_t n, long frames_) : size(n), frames(frames_) {
     const std::size_t span = (n * sizeof(R) + 4095) / 4096 * 4096 + 448;
-    block = static_cast<R*>(::operator new(count * span, std::align_val_t{64}));
+    block = static_cast<R*>(::operator new (count* span, std::align_val_t{64}));
     for (std::size_t k = 0; k < count; ++k) {
       array[k] = reinterpret_cast<R*>(reinterpret_cast<char*>(block) + k * span);
       std::fill(array[k], array[k] + n, R(0));
     }
   }
-  ~HandArrays() { ::operator delete(block, std::align_val_t{64}); }
+  ~HandArrays() { ::operator delete (block, std::align_val_t{64}); }
   HandArrays(const HandArrays&) = delete;
   HandArrays& operator=(const HandArrays&) = delete;
   void copy_state_from(const HandArrays& other) {
     for (std::size_t k = 0; k < 6; ++k) std::copy(other.array[k], other.array[k] + size, array[k]);
   }
   void copy_all_from(const HandArrays& other) {
-    for (std::size_t k = 0; k < count; ++k) std::copy(other.array[k], other.array[k] + size, array[k]);
+    for (std::size_t k = 0; k < count; ++k)
+      std::copy(other.array[k], other.array[k] + size, array[k]);
   }
   R* block;
   R* array[count];
@@ -239,9 +239,7 @@ struct HandArrays {
   long frames;
 };
 
-std::size_t hand_size(bool spring) {
-  return spring ? 2 * copies_per_spring : 4 * copies_per_scene;
-}
+std::size_t hand_size(bool spring) { return spring ? 2 * copies_per_spring : 4 * copies_per_scene; }
 long hand_frames(bool spring) {
   return accuracy::steps_for(spring ? accuracy::spring(false, 10) : accuracy::ballistic_scenes()[0],
                              nominal_frame_time);
@@ -270,10 +268,9 @@ void fill_hand_arrays(HandArrays<R>& arrays, bool spring, R t) {
 /// p1 = p0 + v0 t. (Restrict-qualified parameters: the arrays do not overlap.)
 template <bool Spring, Real R>
 void hand_frame(R* __restrict px, R* __restrict py, R* __restrict pz, R* __restrict vx,
-                R* __restrict vy, R* __restrict vz, const R* __restrict ax,
-                const R* __restrict ay, const R* __restrict az, const R* __restrict kept,
-                const R* __restrict friction, const R* __restrict stiffness, std::size_t n,
-                R t) {
+                R* __restrict vy, R* __restrict vz, const R* __restrict ax, const R* __restrict ay,
+                const R* __restrict az, const R* __restrict kept, const R* __restrict friction,
+                const R* __restrict stiffness, std::size_t n, R t) {
   for (std::size_t i = 0; i < n; ++i) {
     const R x = vx[i], y = vy[i], z = vz[i];
     R gx = ax[i], gy = ay[i], gz = az[i];
@@ -458,7 +455,8 @@ struct RegisterVariant {
   void operator()() const {
     check_variant<S, D, P>();
     const std::string name = accuracy::variant_name<S, D, P>();
-    benchmark::RegisterBenchmark(("Particle/ballistic/" + name).c_str(), BM_Particle<S, D, P, false>);
+    benchmark::RegisterBenchmark(("Particle/ballistic/" + name).c_str(),
+                                 BM_Particle<S, D, P, false>);
     benchmark::RegisterBenchmark(("Particle/spring/" + name).c_str(), BM_Particle<S, D, P, true>);
     benchmark::RegisterBenchmark(("ParticleSystem/sparks/" + name).c_str(), BM_System<S, D, P>);
   }

@@ -115,7 +115,8 @@ double largest_error(const std::vector<accuracy::Scene>& scenes, double h) {
   double error = 0;
   for (const auto& s : scenes) {
     const long steps = accuracy::steps_for(s, h);
-    const auto reference = accuracy::reference_trajectory<pointmass::damping::PerSecond>(s, h, steps);
+    const auto reference =
+        accuracy::reference_trajectory<pointmass::damping::PerSecond>(s, h, steps);
     const auto flown = accuracy::simulate<S, D, P>(s, h, steps);
     error = std::max(error, accuracy::global_error(flown, reference).position);
   }
@@ -161,9 +162,10 @@ bool report_far(const Options& options) {
   bool kept = true, float_worse = true;
   double least_excess = std::numeric_limits<double>::infinity();
   const double finest = *std::max_element(options.frame_rates.begin(), options.frame_rates.end());
-  std::printf("## far from the origin: the shots from (%.0e, %.0e + 1.5, %.0e) m, errors relative\n"
-              "## to the launch frame (m), against float's near the origin\n\n",
-              far.front().offset.x, far.front().offset.y, far.front().offset.z);
+  std::printf(
+      "## far from the origin: the shots from (%.0e, %.0e + 1.5, %.0e) m, errors relative\n"
+      "## to the launch frame (m), against float's near the origin\n\n",
+      far.front().offset.x, far.front().offset.y, far.front().offset.z);
   std::printf("%-20s %7s %11s %11s %11s %11s %11s  %s\n", "pair", "frame", "float near",
               "float far", "double-pos", "compensated", "double far", "wide / float near");
   accuracy::for_each_wide_combination([&]<class D, class P>() {
@@ -186,9 +188,10 @@ bool report_far(const Options& options) {
                   row_worse ? "" : "  <- float NOT worse far away");
     }
   });
-  std::printf("\nfar from the origin, the wide positions %s float's near-origin error (within "
-              "a factor %g)\n",
-              kept ? "keep" : "do NOT keep", far_tolerance);
+  std::printf(
+      "\nfar from the origin, the wide positions %s float's near-origin error (within "
+      "a factor %g)\n",
+      kept ? "keep" : "do NOT keep", far_tolerance);
   std::printf("float far from the origin: %.0f times its near-origin error at 1/%.0f s (%s %g)\n\n",
               least_excess, finest, float_worse ? "at least" : "NOT at least", far_float_excess);
   return kept && float_worse;
@@ -261,11 +264,14 @@ int main(int argc, char** argv) {
   const auto scenes = scenes_named(options.scene);
 
   if (!options.summary_only && options.scene == "ballistic") {
-    std::puts("pointmass: accuracy of every policy combination on the reference engine's ballistic shots");
+    std::puts(
+        "pointmass: accuracy of every policy combination on the reference engine's ballistic "
+        "shots");
     std::puts("(largest position error in metres over 5 s against the exact solution, double;");
     std::puts(" 'exact' = the step is the model's exact flow, the error is rounding)\n");
     for (const auto& s : scenes) {
-      std::printf("## %s: mass %g kg, damping %g per second\n\n", s.name.c_str(), s.mass, s.damping);
+      std::printf("## %s: mass %g kg, damping %g per second\n\n", s.name.c_str(), s.mass,
+                  s.damping);
       std::fputs(accuracy::error_table(s).c_str(), stdout);
       std::puts("");
     }
@@ -282,9 +288,10 @@ int main(int argc, char** argv) {
   measure_variants<accuracy::FloatWithCompensatedPositions>(options, scenes, rows, wide_pairs);
   mark_pareto_front(rows);
 
-  std::printf("## every variant: error (largest over the %s scenes, m), time per particle-step,\n"
-              "## and time to simulate the scene's span (%g s) with one particle\n\n",
-              options.scene.c_str(), scenes_span(scenes));
+  std::printf(
+      "## every variant: error (largest over the %s scenes, m), time per particle-step,\n"
+      "## and time to simulate the scene's span (%g s) with one particle\n\n",
+      options.scene.c_str(), scenes_span(scenes));
   std::printf("%-40s %8s %11s %9s %11s  %s\n", "variant (precision Damping + Position)", "frame",
               "error (m)", "ns/step", "us/span", "front");
   for (const auto& row : rows) {
@@ -292,8 +299,9 @@ int main(int argc, char** argv) {
                 1 / row.frame_time, row.error, row.ns_per_step, row.us_per_span,
                 row.on_front ? "*" : "");
   }
-  std::puts("\n* on the Pareto front: no other variant and frame time simulates the span both\n"
-            "  faster and more accurately.");
+  std::puts(
+      "\n* on the Pareto front: no other variant and frame time simulates the span both\n"
+      "  faster and more accurately.");
   std::puts(options.times.empty()
                 ? "Times: steady clock, median of repetitions on this machine (rough)."
                 : "Times: from the given benchmark results.");
@@ -308,8 +316,8 @@ int main(int argc, char** argv) {
     std::fprintf(csv, "scene,variant,frame_time,error_m,ns_per_step,us_per_span,on_front\n");
     for (const auto& row : rows) {
       std::fprintf(csv, "%s,%s,%.17g,%.6e,%.4f,%.4f,%d\n", options.scene.c_str(),
-                   row.variant.c_str(), row.frame_time, row.error, row.ns_per_step,
-                   row.us_per_span, row.on_front ? 1 : 0);
+                   row.variant.c_str(), row.frame_time, row.error, row.ns_per_step, row.us_per_span,
+                   row.on_front ? 1 : 0);
     }
     std::fclose(csv);
   }

@@ -45,9 +45,9 @@
 namespace {
 
 using namespace pointmass;
-using Number = float;  // the precision of the whole show
-struct ColourTag {};   // names the colour column
-struct SerialTag {};   // names the serial number column
+using Number = float;          // the precision of the whole show
+struct ColourTag {};           // names the colour column
+struct SerialTag {};           // names the serial number column
 using Colour = std::uint32_t;  // 0xRRGGBB
 using Serial = std::uint32_t;  // the spark's place in the show's record of what it spawned
 using Sparks = ParticleSystem<Number, damping::PerSecond, position::Euler, features::Lifetime,
@@ -112,8 +112,8 @@ struct Show {
               Colour colour) {
     const Rule& rule = rules[static_cast<std::size_t>(type - 1)];
     const Vector3<Number> velocity{uniform(random, rule.min_velocity.x, rule.max_velocity.x),
-                                 uniform(random, rule.min_velocity.y, rule.max_velocity.y),
-                                 uniform(random, rule.min_velocity.z, rule.max_velocity.z)};
+                                   uniform(random, rule.min_velocity.y, rule.max_velocity.y),
+                                   uniform(random, rule.min_velocity.z, rule.max_velocity.z)};
     Sparks& system = sparks[static_cast<std::size_t>(type - 1)];
     const Number fuse = uniform(random, rule.min_fuse, rule.max_fuse);
     const auto serial = static_cast<Serial>(spawned_sparks.size());
@@ -232,8 +232,8 @@ int main(int argc, char** argv) {
         drawn.resize(3 * system.size());
         system.copy_interpolated_positions(Number(frame.alpha), std::span<Number>(drawn));
         for (std::size_t i = 0; i < system.size(); ++i) {
-          std::fprintf(csv, "%.3f,%zu,%.3f,%.3f,%.3f,%06x\n", drawn_at, t + 1,
-                       double(drawn[3 * i]), double(drawn[3 * i + 1]), double(drawn[3 * i + 2]),
+          std::fprintf(csv, "%.3f,%zu,%.3f,%.3f,%.3f,%06x\n", drawn_at, t + 1, double(drawn[3 * i]),
+                       double(drawn[3 * i + 1]), double(drawn[3 * i + 2]),
                        unsigned(system.column<ColourTag>(i)));
         }
       }
@@ -245,9 +245,10 @@ int main(int argc, char** argv) {
               show.live(), show.bursts);
   if (show.spawned != show.burnt_out + show.live() || show.bad_fuses != 0 ||
       show.wrong_colours != 0) {
-    std::printf("accounting: FAILED (%ld sparks with another's fuse or one out of range, %ld "
-                "sparks or children in another colour)\n",
-                show.bad_fuses, show.wrong_colours);
+    std::printf(
+        "accounting: FAILED (%ld sparks with another's fuse or one out of range, %ld "
+        "sparks or children in another colour)\n",
+        show.bad_fuses, show.wrong_colours);
     return 1;
   }
   std::printf("accounting: ok\n");

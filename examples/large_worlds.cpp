@@ -50,8 +50,8 @@ void configure(Particle& particle, const Launch& launch) {
 }
 
 struct Drift {
-  double exact[3];   ///< float, double positions, compensated: against the exact sum
-  double twin[3];    ///< the same against all-double
+  double exact[3];  ///< float, double positions, compensated: against the exact sum
+  double twin[3];   ///< the same against all-double
 };
 
 template <class D, class P>
@@ -112,13 +112,40 @@ int main(int argc, char** argv) {
   namespace p = pm::position;
   // Free flight (no drag, no gravity) as in docs/accuracy.md; the artillery shot (gravity and
   // per-second drag, the exact pair) launched far from the origin; sparks (per-frame drag).
-  const Launch free_1e6{"free flight from 1e6 m (None, Euler)", {1e6, 0, 0}, {10, 0, 5}, {0, 0, 0}, 1.0f, steps};
-  const Launch free_1e8{"free flight from 1e8 m (None, Euler)", {1e8, 0, 0}, {10, 0, 5}, {0, 0, 0}, 1.0f, steps};
-  const Launch shot_1e6{"artillery from 1e6 m, gravity and drag (Exact, Exact)", {1e6, 0, 2.5e5}, {300, 400, 0}, {0, -9.81f, 0}, 0.9f, steps};
-  const Launch shot_1e8{"artillery from 1e8 m, gravity and drag (Exact, Exact)", {1e8, 0, 2.5e7}, {300, 400, 0}, {0, -9.81f, 0}, 0.9f, steps};
-  const Launch sparks_1e6{"sparks from 1e6 m, per-frame drag (PerFrame, Kinematic)", {0, 1e6, 0}, {3, 8, -2}, {0, -9.81f, 0}, 0.995f, steps};
-  const Launch shot_near{"near the origin: a 10 s shot from (0, 0, 0) (Exact, Exact), 600 steps", {0, 0, 0}, {30, 40, 0}, {0, -9.81f, 0}, 0.9f, 600};
-  const Launch free_near{"near the origin: 10^4 steps of 0.1 m/s from (1, 2, 3) (None, Euler)", {1, 2, 3}, {0.1f, 0, 0.05f}, {0, 0, 0}, 1.0f, 10'000};
+  const Launch free_1e6{
+      "free flight from 1e6 m (None, Euler)", {1e6, 0, 0}, {10, 0, 5}, {0, 0, 0}, 1.0f, steps};
+  const Launch free_1e8{
+      "free flight from 1e8 m (None, Euler)", {1e8, 0, 0}, {10, 0, 5}, {0, 0, 0}, 1.0f, steps};
+  const Launch shot_1e6{"artillery from 1e6 m, gravity and drag (Exact, Exact)",
+                        {1e6, 0, 2.5e5},
+                        {300, 400, 0},
+                        {0, -9.81f, 0},
+                        0.9f,
+                        steps};
+  const Launch shot_1e8{"artillery from 1e8 m, gravity and drag (Exact, Exact)",
+                        {1e8, 0, 2.5e7},
+                        {300, 400, 0},
+                        {0, -9.81f, 0},
+                        0.9f,
+                        steps};
+  const Launch sparks_1e6{"sparks from 1e6 m, per-frame drag (PerFrame, Kinematic)",
+                          {0, 1e6, 0},
+                          {3, 8, -2},
+                          {0, -9.81f, 0},
+                          0.995f,
+                          steps};
+  const Launch shot_near{"near the origin: a 10 s shot from (0, 0, 0) (Exact, Exact), 600 steps",
+                         {0, 0, 0},
+                         {30, 40, 0},
+                         {0, -9.81f, 0},
+                         0.9f,
+                         600};
+  const Launch free_near{"near the origin: 10^4 steps of 0.1 m/s from (1, 2, 3) (None, Euler)",
+                         {1, 2, 3},
+                         {0.1f, 0, 0.05f},
+                         {0, 0, 0},
+                         1.0f,
+                         10'000};
 
   struct Row {
     const Launch* launch;
@@ -132,19 +159,23 @@ int main(int argc, char** argv) {
                       {&shot_near, fly<d::Exact, p::Exact>(shot_near)},
                       {&free_near, fly<d::None, p::Euler>(free_near)}};
 
-  std::printf("Drift after %ld steps of 1/60 s (unless the row says otherwise) against the exact "
-              "sum of the same float steps (what the position storage loses):\n\n",
-              steps);
-  std::printf("| launch | float | `Precision<float, double>` | `Precision<float, Compensated<float>>` |\n"
-              "|---|---|---|---|\n");
+  std::printf(
+      "Drift after %ld steps of 1/60 s (unless the row says otherwise) against the exact "
+      "sum of the same float steps (what the position storage loses):\n\n",
+      steps);
+  std::printf(
+      "| launch | float | `Precision<float, double>` | `Precision<float, Compensated<float>>` |\n"
+      "|---|---|---|---|\n");
   for (const Row& row : rows) {
     std::printf("| %s | %s | %s | %s |\n", row.launch->name, metres(row.drift.exact[0]).c_str(),
                 metres(row.drift.exact[1]).c_str(), metres(row.drift.exact[2]).c_str());
   }
-  std::printf("\nThe same against an all-double particle (double velocities and step; for "
-              "information: it includes what the float inputs themselves differ by):\n\n");
-  std::printf("| launch | float | `Precision<float, double>` | `Precision<float, Compensated<float>>` |\n"
-              "|---|---|---|---|\n");
+  std::printf(
+      "\nThe same against an all-double particle (double velocities and step; for "
+      "information: it includes what the float inputs themselves differ by):\n\n");
+  std::printf(
+      "| launch | float | `Precision<float, double>` | `Precision<float, Compensated<float>>` |\n"
+      "|---|---|---|---|\n");
   for (const Row& row : rows) {
     std::printf("| %s | %s | %s | %s |\n", row.launch->name, metres(row.drift.twin[0]).c_str(),
                 metres(row.drift.twin[1]).c_str(), metres(row.drift.twin[2]).c_str());

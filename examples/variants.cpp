@@ -8,8 +8,8 @@
 // per-second, exact).
 //
 //   variants [--quick]   (--quick: a shorter timing run)
-#include <pointmass/particle_system.hpp>
 #include <pointmass/extras/scenes.hpp>
+#include <pointmass/particle_system.hpp>
 #include <pointmass/pointmass.hpp>
 
 #include <algorithm>
@@ -91,13 +91,15 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::printf("Particle variants: size, what one particle stores, time per step\n");
-  std::printf("(p position, v velocity, a acceleration, f force accumulator, 1/m inverse mass,"
-              " d damping)\n\n");
+  std::printf(
+      "(p position, v velocity, a acceleration, f force accumulator, 1/m inverse mass,"
+      " d damping)\n\n");
   particle_rows<float>("float");
   particle_rows<double>("double");
 
-  std::printf("\nParticleSystem: what a feature set stores per particle (uniform damping and\n"
-              "gravity are stored once for the whole system)\n\n");
+  std::printf(
+      "\nParticleSystem: what a feature set stores per particle (uniform damping and\n"
+      "gravity are stored once for the whole system)\n\n");
   using namespace features;
   using D = damping::PerSecond;
   using P = position::Euler;
@@ -106,7 +108,7 @@ int main(int argc, char** argv) {
   system_row<ParticleSystem<float, D, P, ForceAccumulator>>(", ForceAccumulator");
   system_row<ParticleSystem<float, D, P, PerParticleAcceleration>>(", PerParticleAcceleration");
   system_row<ParticleSystem<float, D, P, PerParticleDamping>>(", PerParticleDamping");
-  system_row<ParticleSystem<float, D, P, PerParticleDamping, PerParticleAcceleration, ForceAccumulator,
-                            Lifetime>>(", all four");
+  system_row<ParticleSystem<float, D, P, PerParticleDamping, PerParticleAcceleration,
+                            ForceAccumulator, Lifetime>>(", all four");
   return 0;
 }

@@ -66,14 +66,25 @@ TEST_CASE("setters reject bad values, name them, and change nothing") {
                     {"set_inverse_mass", "'inverse_mass' = -1", ">= 0"});
   check_rejected<P>([](P& p) { p.set_inverse_mass(not_a_number); }, {"'inverse_mass' = nan"});
   check_rejected<P>([](P& p) { p.set_inverse_mass(infinity); }, {"'inverse_mass' = inf"});
-  check_rejected<P>([](P& p) { p.set_damping(1.5f); }, {"set_damping", "'damping' = 1.5", "[0, 1]"});
+  check_rejected<P>([](P& p) { p.set_damping(1.5f); },
+                    {"set_damping", "'damping' = 1.5", "[0, 1]"});
   check_rejected<P>([](P& p) { p.set_damping(-0.25f); }, {"'damping' = -0.25"});
   check_rejected<P>([](P& p) { p.set_damping(not_a_number); }, {"'damping' = nan"});
-  check_rejected<P>([](P& p) { p.set_position({0, infinity, 0}); },
-                    {"set_position", "'position' = (0, inf, 0)", "finite"});
-  check_rejected<P>([](P& p) { p.set_velocity({not_a_number, 0, 0}); }, {"set_velocity", "'velocity'"});
-  check_rejected<P>([](P& p) { p.set_acceleration({0, 0, -infinity}); },
-                    {"set_acceleration", "(0, 0, -inf)"});
+  check_rejected<P>(
+      [](P& p) {
+        p.set_position({0, infinity, 0});
+      },
+      {"set_position", "'position' = (0, inf, 0)", "finite"});
+  check_rejected<P>(
+      [](P& p) {
+        p.set_velocity({not_a_number, 0, 0});
+      },
+      {"set_velocity", "'velocity'"});
+  check_rejected<P>(
+      [](P& p) {
+        p.set_acceleration({0, 0, -infinity});
+      },
+      {"set_acceleration", "(0, 0, -inf)"});
 }
 
 TEST_CASE("the limits of the ranges are accepted") {
@@ -90,15 +101,18 @@ TEST_CASE("the limits of the ranges are accepted") {
 
 TEST_CASE("hot-path checks: integrate's duration and add_force's vector") {
   using P = Particle<double, damping::Exact, position::Exact>;
-  for (const double bad : {-0.1, -std::numeric_limits<double>::infinity(),
-                           std::numeric_limits<double>::infinity(),
-                           std::numeric_limits<double>::quiet_NaN()}) {
+  for (const double bad :
+       {-0.1, -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+        std::numeric_limits<double>::quiet_NaN()}) {
     CAPTURE(bad);
     check_rejected<P>([bad](P& p) { p.integrate(bad); }, {"integrate", "'duration' = ", ">= 0"});
   }
   check_rejected<P>([](P& p) { p.integrate(-0.1); }, {"'duration' = -0.1"});
-  check_rejected<P>([](P& p) { p.add_force({1, std::numeric_limits<double>::quiet_NaN(), 0}); },
-                    {"add_force", "'force' = (1, nan, 0)"});
+  check_rejected<P>(
+      [](P& p) {
+        p.add_force({1, std::numeric_limits<double>::quiet_NaN(), 0});
+      },
+      {"add_force", "'force' = (1, nan, 0)"});
 }
 
 namespace {

@@ -105,7 +105,8 @@ TEST_CASE("FlushDenormals: exception flags raised while it lives stay raised aft
 
 TEST_CASE_TEMPLATE(
     "FlushDenormals: damped velocities in the subnormal range come to rest, a Particle and a "
-    "ParticleSystem alike" * doctest::skip(!FlushDenormals::supported),
+    "ParticleSystem alike" *
+        doctest::skip(!FlushDenormals::supported),
     R, float, double) {
   if (!FlushDenormals::supported) return;  // (only run with --no-skip)
   using Vector = pointmass::Vector3<R>;

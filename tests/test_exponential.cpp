@@ -49,15 +49,16 @@ static_assert(detail::expm1(0.0f) == 0.0f && detail::expm1(0.0) == 0.0);
 static_assert(detail::exp(-1000.0) == 0.0 && detail::exp(-200.0f) == 0.0f);
 static_assert(detail::expm1(-1000.0) == -1.0);
 static_assert(detail::exp(2.0) > 7.389056098930649 && detail::exp(2.0) < 7.389056098930651);
-static_assert(detail::pow_unit(detail::SplitLog<double>{}, 0.5) == 1.0);  // d = 1
+static_assert(detail::pow_unit(detail::SplitLog<double>{}, 0.5) == 1.0);                 // d = 1
 static_assert(detail::pow_unit(detail::SplitLog<float>{-0.6875f, 0.0f}, 0.0f) == 1.0f);  // t = 0
 // (Overflow to infinity, and d = 0, where 0 * infinity is computed and then dropped, are not
 // constant expressions: checked at run time below.)
 
 }  // namespace
 
-TEST_CASE_TEMPLATE("d^t and d^t - 1 are within 4 ulp of long double's for d in [1e-3, 1], t in [0, 1] s",
-                   R, float, double) {
+TEST_CASE_TEMPLATE(
+    "d^t and d^t - 1 are within 4 ulp of long double's for d in [1e-3, 1], t in [0, 1] s", R, float,
+    double) {
   if constexpr (!pointmass::wider_than_double_v<long double> && std::is_same_v<R, double>) {
     // Where long double is double (32-bit ARM) there is no wider oracle here: the oracle's own
     // t * log(d), rounded to double, errs by up to |x| / 2 ulp of d^t, more than the library's
@@ -78,9 +79,10 @@ TEST_CASE_TEMPLATE("d^t and d^t - 1 are within 4 ulp of long double's for d in [
         const R t = static_cast<R>(static_cast<long double>(j) / 200 + 1e-3L * (j % 7));
         if (t > R(1)) continue;
         const long double x = static_cast<long double>(t) * std::log(static_cast<long double>(d));
-        const long long power = ulp_distance(detail::pow_unit(ln_d, t), static_cast<R>(std::exp(x)));
-        const long long minus_one = ulp_distance(detail::exp_unit(ln_d, t).kept_minus_one,
-                                                 static_cast<R>(std::expm1(x)));
+        const long long power =
+            ulp_distance(detail::pow_unit(ln_d, t), static_cast<R>(std::exp(x)));
+        const long long minus_one =
+            ulp_distance(detail::exp_unit(ln_d, t).kept_minus_one, static_cast<R>(std::expm1(x)));
         worst_power = power > worst_power ? power : worst_power;
         worst_minus_one = minus_one > worst_minus_one ? minus_one : worst_minus_one;
       }
@@ -181,14 +183,16 @@ void check_double_split_log() {
 
 }  // namespace
 
-TEST_CASE("split_log for double is ln d to 2^-72 against correctly rounded values, on every platform") {
+TEST_CASE(
+    "split_log for double is ln d to 2^-72 against correctly rounded values, on every platform") {
   check_double_split_log<double>();
   if constexpr (!pointmass::wider_than_double_v<long double>) {
     check_double_split_log<long double>();  // long double is double here: the same path
   }
 }
 
-TEST_CASE("split_log for float is ln d to 2^-35 against correctly rounded values, on every platform") {
+TEST_CASE(
+    "split_log for float is ln d to 2^-35 against correctly rounded values, on every platform") {
   for (const LogOracle& oracle : pointmass::test::log_oracle_float) {
     CAPTURE(oracle.d);
     const auto ln_d = detail::split_log(static_cast<float>(oracle.d));
@@ -200,7 +204,9 @@ TEST_CASE("split_log for float is ln d to 2^-35 against correctly rounded values
   }
 }
 
-TEST_CASE("the library's logarithms over the whole double range: subnormals, both sides of sqrt(1/2), d near 1") {
+TEST_CASE(
+    "the library's logarithms over the whole double range: subnormals, both sides of sqrt(1/2), d "
+    "near 1") {
   for (const LogOracle& oracle : pointmass::test::log_oracle_double) {
     CAPTURE(oracle.d);
     const detail::DoubleDouble wide = detail::log_double_double(oracle.d);
@@ -212,7 +218,8 @@ TEST_CASE("the library's logarithms over the whole double range: subnormals, bot
   static_assert(detail::log_double_double(1.0).hi == 0.0 && detail::log_double(1.0) == 0.0);
 }
 
-TEST_CASE_TEMPLATE("e^x and e^x - 1 over the whole range: overflow, underflow, NaN", R, float, double) {
+TEST_CASE_TEMPLATE("e^x and e^x - 1 over the whole range: overflow, underflow, NaN", R, float,
+                   double) {
   const R inf = std::numeric_limits<R>::infinity();
   const R nan = std::numeric_limits<R>::quiet_NaN();
   long long worst = 0;
@@ -299,8 +306,8 @@ TEST_CASE_TEMPLATE("e^x and e^x - 1 over the whole range: overflow, underflow, N
   CHECK(std::isnan(detail::expm1(nan)));
   CHECK(std::isnan(detail::expm1(-nan)));
   // The smallest results round into the subnormals correctly.
-  CHECK(detail::exp(static_cast<R>(std::log(static_cast<long double>(std::numeric_limits<R>::denorm_min())))) ==
-        std::numeric_limits<R>::denorm_min());
+  CHECK(detail::exp(static_cast<R>(std::log(static_cast<long double>(
+            std::numeric_limits<R>::denorm_min())))) == std::numeric_limits<R>::denorm_min());
 }
 
 TEST_CASE_TEMPLATE("pow_unit_scalar, a Particle's d^t, is pow_unit bit for bit", R, float, double,

@@ -156,8 +156,10 @@ void check_negative_zeros() {
   }
 }
 
-TEST_CASE_TEMPLATE("a duration or inverse mass of -0 is zero, on a new step length and the kept "
-                   "one", R, float, double) {
+TEST_CASE_TEMPLATE(
+    "a duration or inverse mass of -0 is zero, on a new step length and the kept "
+    "one",
+    R, float, double) {
   check_negative_zeros<Particle<R, damping::AccelerateThenDamp, position::Euler>>();
   check_negative_zeros<Particle<R>>();
   check_negative_zeros<Particle<R, damping::PerFrame, position::Kinematic>>();
@@ -209,7 +211,6 @@ TEST_CASE("the scenes hold the reference engine's shots") {
   CHECK(p.damping() == 0.99);
 }
 
-
 TEST_CASE("a fixed-step loop computes the damping factors once, and again only when needed") {
   using pointmass::test::CountingPerSecond;
   using Counted = Particle<float, CountingPerSecond>;
@@ -234,9 +235,9 @@ TEST_CASE("a fixed-step loop computes the damping factors once, and again only w
   CHECK(CountingPerSecond::factor_calls == 4);  // a zero step computes none
 }
 
-
-TEST_CASE_TEMPLATE("a repeated step length reuses the damping factors, a new length or damping does not",
-                   D, damping::PerSecond, damping::AccelerateThenDamp, damping::Exact) {
+TEST_CASE_TEMPLATE(
+    "a repeated step length reuses the damping factors, a new length or damping does not", D,
+    damping::PerSecond, damping::AccelerateThenDamp, damping::Exact) {
   using R = float;
   using Counting = pointmass::test::CountingFactors<D>;
   static_assert(DampingPolicy<Counting>);

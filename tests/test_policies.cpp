@@ -50,7 +50,7 @@ TEST_CASE_TEMPLATE_DEFINE("one step matches the policy's equations", C, one_step
   INFO("position ", particle.position(), " velocity ", particle.velocity());
   CHECK(close(particle.position(), vec<R>(expected.p), R(16)));
   CHECK(close(particle.velocity(), vec<R>(expected.v), R(16)));
-  CHECK(particle.force_accumulator() == Vector3<R>{});      // cleared by the step
+  CHECK(particle.force_accumulator() == Vector3<R>{});               // cleared by the step
   CHECK(particle.acceleration() == Vector3<R>{R(0), R(-10), R(0)});  // left alone
 }
 TEST_CASE_TEMPLATE_APPLY(one_step_id, test::AllCombinations);
@@ -143,11 +143,11 @@ TEST_CASE_TEMPLATE("damping::Exact's phi2 is within 4 ulps on each side of the s
     const damping::LogDamping<R> state(d);
     const R phi2 = damping::Exact::factors(state, t).phi2;
     const long double x = std::log(static_cast<long double>(d)) * static_cast<long double>(t);
-    const long double oracle =
-        x >= -1.0L ? phi_oracle(x, 2) : (std::expm1(x) - x) / (x * x);
+    const long double oracle = x >= -1.0L ? phi_oracle(x, 2) : (std::expm1(x) - x) / (x * x);
     if (!close(phi2, static_cast<R>(oracle), R(4), R(0))) {
-      if (outside == 0) MESSAGE("x = ", static_cast<double>(x), ": phi2 ", phi2, ", oracle ",
-                                static_cast<double>(oracle));
+      if (outside == 0)
+        MESSAGE("x = ", static_cast<double>(x), ": phi2 ", phi2, ", oracle ",
+                static_cast<double>(oracle));
       ++outside;
     }
   }
@@ -203,15 +203,14 @@ TEST_CASE_TEMPLATE("values worked out by hand", R, float, double) {
     CHECK(close(p.velocity(),
                 Vector3<R>{root_half, R(2) * root_half - R(4.2255559429217389L), R(3) * root_half},
                 R(8)));
-    CHECK(close(p.position(),
-                Vector3<R>{R(10.422555594292173894L), R(19.727824587991611L),
-                           R(31.267666782876521L)},
-                R(8)));
+    CHECK(
+        close(p.position(),
+              Vector3<R>{R(10.422555594292173894L), R(19.727824587991611L), R(31.267666782876521L)},
+              R(8)));
   }
 }
 
-TEST_CASE_TEMPLATE("constant-acceleration flight matches p0 + v0 t + a t^2 / 2", R, float,
-                   double) {
+TEST_CASE_TEMPLATE("constant-acceleration flight matches p0 + v0 t + a t^2 / 2", R, float, double) {
   // Kinematic without damping is exact for constant acceleration; so is the exact pair.
   const Vector3<R> p0{R(0), R(1.5), R(0)};
   const Vector3<R> v0{R(3), R(30), R(40)};
@@ -232,8 +231,8 @@ TEST_CASE_TEMPLATE("constant-acceleration flight matches p0 + v0 t + a t^2 / 2",
     exact.integrate(t);
   }
   const long double time = static_cast<long double>(t) * steps;
-  const Vector3<R> expected{
-      R(0 + 3 * time), R(1.5L + 30 * time - 9.807L * time * time / 2), R(40 * time)};
+  const Vector3<R> expected{R(0 + 3 * time), R(1.5L + 30 * time - 9.807L * time * time / 2),
+                            R(40 * time)};
   const Vector3<R> expected_velocity{R(3), R(30 - 9.807L * time), R(40)};
   const R ulps = R(4 * steps);
   CHECK(close(kinematic.position(), expected, ulps, R(160)));
@@ -338,7 +337,8 @@ TEST_CASE("the exact policies at the limits of damping: no NaN, the right limit"
       const test::OracleState start{{0, 0, 0}, {0, 30, 40}};
       const long double a[3] = {0, -20, 0};
       if (d > 0) {
-        const auto expected = test::oracle_step<damping::Exact, position::Exact>(start, a, static_cast<long double>(d), static_cast<long double>(t));
+        const auto expected = test::oracle_step<damping::Exact, position::Exact>(
+            start, a, static_cast<long double>(d), static_cast<long double>(t));
         INFO("position ", p.position(), " expected ", vec<R>(expected.p));
         CHECK(close(p.position(), vec<R>(expected.p), 16.0, 1.0));
         CHECK(close(p.velocity(), vec<R>(expected.v), 16.0, 1.0));

@@ -40,9 +40,10 @@ namespace {
 /// independent evaluations vouch for it (a result within 2^-40 of a float midpoint, where
 /// rounding twice could differ, would show as a disagreement).
 bool correctly_rounded_pow(float b, float e, float& result) {
-  const float from_long_double = static_cast<float>(::powl(static_cast<long double>(b),
-                                                           static_cast<long double>(e)));
-  const float from_double = static_cast<float>(std::pow(static_cast<double>(b), static_cast<double>(e)));
+  const float from_long_double =
+      static_cast<float>(::powl(static_cast<long double>(b), static_cast<long double>(e)));
+  const float from_double =
+      static_cast<float>(std::pow(static_cast<double>(b), static_cast<double>(e)));
   result = from_long_double;
   return from_long_double == from_double;
 }
@@ -105,8 +106,12 @@ TEST_CASE_TEMPLATE("real_sqrt in a constant expression is correctly rounded, as 
                    float, double) {
   // 12 chunks of 256 (each its own constant expression, within clang's step limit).
   CHECK(constant_roots_off<R>(std::make_integer_sequence<int, 12>{}) == 0);
-  constexpr R edges[] = {std::numeric_limits<R>::denorm_min(), std::numeric_limits<R>::min(),
-                         std::numeric_limits<R>::max(), R(1), R(2), R(0.5)};
+  constexpr R edges[] = {std::numeric_limits<R>::denorm_min(),
+                         std::numeric_limits<R>::min(),
+                         std::numeric_limits<R>::max(),
+                         R(1),
+                         R(2),
+                         R(0.5)};
   constexpr R edge_roots[] = {pointmass::real_sqrt(edges[0]), pointmass::real_sqrt(edges[1]),
                               pointmass::real_sqrt(edges[2]), pointmass::real_sqrt(edges[3]),
                               pointmass::real_sqrt(edges[4]), pointmass::real_sqrt(edges[5])};
@@ -145,9 +150,10 @@ TEST_CASE("real_pow of floats is powf, not pow on promoted doubles") {
       CHECK(value != correct);
       CHECK(std::abs(value - correct) <= std::nextafter(correct, 2.0f) - correct);
     }
-    CHECK_MESSAGE(found >= 8, "too few inputs where powf differs from the correctly rounded "
-                              "power: on this platform real_pow's float path cannot be told "
-                              "from the promoted one");
+    CHECK_MESSAGE(found >= 8,
+                  "too few inputs where powf differs from the correctly rounded "
+                  "power: on this platform real_pow's float path cannot be told "
+                  "from the promoted one");
   }
   CHECK(pointmass::real_pow(0.99, 1.0 / 30) == std::pow(0.99, 1.0 / 30));
   CHECK(pointmass::real_pow(0.99L, 1.0L / 30) == ::powl(0.99L, 1.0L / 30));
@@ -188,8 +194,10 @@ TEST_CASE_TEMPLATE("classification raises nothing and is exact", T, float, doubl
 
 // The step's two value tests on bit patterns (detail::same_bits, detail::is_zero): a kept
 // step length against a new one, and a zero duration or inverse mass of either sign.
-TEST_CASE_TEMPLATE("is_zero is x == 0 for every x, and same_bits is x == y where neither is NaN "
-                   "or a zero", T, float, double, long double) {
+TEST_CASE_TEMPLATE(
+    "is_zero is x == 0 for every x, and same_bits is x == y where neither is NaN "
+    "or a zero",
+    T, float, double, long double) {
   using pointmass::detail::is_zero;
   const T values[] = {T(0),
                       -T(0),
@@ -207,8 +215,8 @@ TEST_CASE_TEMPLATE("is_zero is x == 0 for every x, and same_bits is x == y where
     CAPTURE(x);
     CHECK(is_zero(x) == pointmass::real_equal(x, T(0)));
     for (const T y : values) {
-      if (pointmass::real_isnan(x) || pointmass::real_isnan(y) ||
-          pointmass::real_equal(x, T(0)) || pointmass::real_equal(y, T(0))) {
+      if (pointmass::real_isnan(x) || pointmass::real_isnan(y) || pointmass::real_equal(x, T(0)) ||
+          pointmass::real_equal(y, T(0))) {
         continue;
       }
       CAPTURE(y);

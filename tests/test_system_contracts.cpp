@@ -11,8 +11,8 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
-#include <stdexcept>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <type_traits>
@@ -26,8 +26,8 @@ using namespace pointmass;
 namespace {
 
 using Sparks = ParticleSystem<float>;
-using Forced = ParticleSystem<float, damping::PerSecond, position::Euler,
-                              features::ForceAccumulator>;
+using Forced =
+    ParticleSystem<float, damping::PerSecond, position::Euler, features::ForceAccumulator>;
 using Aging = ParticleSystem<float, damping::None, position::Euler, features::Lifetime>;
 
 template <class System>
@@ -65,10 +65,9 @@ TEST_CASE("reserve refuses a capacity whose size arithmetic would overflow, and 
   Sparks system = three_particles<Sparks>();
   const std::size_t capacity = system.capacity();
   const Sparks before = system;
-  for (std::size_t huge : {std::numeric_limits<std::size_t>::max(),
-                           std::numeric_limits<std::size_t>::max() / 2,
-                           std::numeric_limits<std::size_t>::max() / 24 + 1,
-                           Sparks::max_size() + 1}) {
+  for (std::size_t huge :
+       {std::numeric_limits<std::size_t>::max(), std::numeric_limits<std::size_t>::max() / 2,
+        std::numeric_limits<std::size_t>::max() / 24 + 1, Sparks::max_size() + 1}) {
     CAPTURE(huge);
     CHECK_THROWS_AS(system.reserve(huge), std::length_error);
     CHECK(system.capacity() == capacity);
@@ -98,7 +97,7 @@ struct WideTag {};
 // a + b and a * b, or SIZE_MAX where the exact result would not fit.
 std::size_t saturated_add(std::size_t a, std::size_t b) {
   return b > std::numeric_limits<std::size_t>::max() - a ? std::numeric_limits<std::size_t>::max()
-                                                          : a + b;
+                                                         : a + b;
 }
 std::size_t saturated_multiply(std::size_t a, std::size_t b) {
   return b != 0 && a > std::numeric_limits<std::size_t>::max() / b
@@ -114,11 +113,12 @@ struct Sized {
 };
 }  // namespace
 
-TEST_CASE_TEMPLATE("at max_size() the block's bytes, every array rounded up to its pages and "
-                   "staggered, still fit in a ptrdiff_t",
-                   Case, Sized<float, damping::PerSecond>, Sized<double, damping::PerSecond>,
-                   Sized<Precision<float, Compensated<float>>, damping::PerSecond>,
-                   Sized<float, damping::PerSecond, features::Column<WideTag, std::array<double, 4>>>) {
+TEST_CASE_TEMPLATE(
+    "at max_size() the block's bytes, every array rounded up to its pages and "
+    "staggered, still fit in a ptrdiff_t",
+    Case, Sized<float, damping::PerSecond>, Sized<double, damping::PerSecond>,
+    Sized<Precision<float, Compensated<float>>, damping::PerSecond>,
+    Sized<float, damping::PerSecond, features::Column<WideTag, std::array<double, 4>>>) {
   // The sum the block's allocation makes (detail/soa_block.hpp), at the largest capacity
   // reserve accepts, for every array, the user's columns and their element sizes included.
   using System = typename Case::System;
@@ -162,9 +162,8 @@ TEST_CASE("index reads and writes beyond size() are reported, naming the functio
   // "FUNCTION: argument 'index' = 3 must be < size()": each names itself, not another.
   const auto reported = [](const char* function, auto f) {
     const std::string message = invalid_argument_of(f);
-    const bool named =
-        message.find(std::string(function) + ": argument 'index' = 3 must be < size()") !=
-        std::string::npos;
+    const bool named = message.find(std::string(function) +
+                                    ": argument 'index' = 3 must be < size()") != std::string::npos;
     if (!named) MESSAGE("expected a report from ", std::string(function), ", got: ", message);
     return named;
   };
@@ -206,10 +205,12 @@ TEST_CASE("step_range and step_range_backward check their range against arrays()
   Sparks system = three_particles<Sparks>();
   const Sparks before = system;
   const auto parameters = system.step_parameters(0.1f);
-  CHECK(invalid_argument_of([&] { Sparks::step_range(system.arrays(), 0, 4, parameters); })
-            .find("argument 'end' = 4 must be <= size()") != std::string::npos);
-  CHECK(invalid_argument_of([&] { Sparks::step_range(system.arrays(), 2, 1, parameters); })
-            .find("argument 'begin' = 2 must be <= end") != std::string::npos);
+  CHECK(invalid_argument_of([&] {
+          Sparks::step_range(system.arrays(), 0, 4, parameters);
+        }).find("argument 'end' = 4 must be <= size()") != std::string::npos);
+  CHECK(invalid_argument_of([&] {
+          Sparks::step_range(system.arrays(), 2, 1, parameters);
+        }).find("argument 'begin' = 2 must be <= end") != std::string::npos);
   CHECK(invalid_argument_of([&] {
           Sparks::step_range_backward(system.arrays(), 2, 1, parameters);
         }).find("argument 'begin' = 2 must be <= end") != std::string::npos);
@@ -262,8 +263,9 @@ TEST_CASE_TEMPLATE("a finite mass is accepted only when mass() stays finite", R,
   CHECK(particle.has_finite_mass());
   CHECK(real_isfinite(particle.mass()));
   // An inverse mass so small that its mass would overflow is refused too; 0 is immovable.
-  CHECK(invalid_argument_of([&] { particle.set_inverse_mass(std::numeric_limits<R>::denorm_min()); })
-            .find("argument 'inverse_mass'") != std::string::npos);
+  CHECK(invalid_argument_of([&] {
+          particle.set_inverse_mass(std::numeric_limits<R>::denorm_min());
+        }).find("argument 'inverse_mass'") != std::string::npos);
   particle.set_inverse_mass(R(0));
   CHECK_FALSE(particle.has_finite_mass());
   ParticleSystem<R, damping::PerSecond, position::Euler, features::ForceAccumulator> system;
@@ -274,8 +276,8 @@ TEST_CASE_TEMPLATE("a finite mass is accepted only when mass() stays finite", R,
 }
 
 TEST_CASE("a removal pass refuses steps and removals from its callback, and outlives a reset") {
-  using Game = ParticleSystem<float, damping::None, position::Euler, features::Lifetime,
-                              features::Handles>;
+  using Game =
+      ParticleSystem<float, damping::None, position::Euler, features::Lifetime, features::Handles>;
   // An expiry callback that steps: refused by step and finish_step, naming the argument; only
   // the expiring particle goes, and the others are where a plain step leaves them.
   Game system = three_particles<Game>();
@@ -378,10 +380,12 @@ TEST_CASE("the game features' arguments: removals in an expiry callback, buffers
   system.step(0.02f, [&](std::size_t i) {
     CHECK(i == 1);
     kill_message = invalid_argument_of([&] { system.kill(0); });
-    kill_if_message = invalid_argument_of([&] { (void)system.kill_if([](std::size_t) { return true; }); });
+    kill_if_message =
+        invalid_argument_of([&] { (void)system.kill_if([](std::size_t) { return true; }); });
     clear_message = invalid_argument_of([&] { system.clear(); });
   });
-  CHECK(kill_message.find("kill: argument 'index' = 0 must be not removed during an expiry callback") !=
+  CHECK(kill_message.find(
+            "kill: argument 'index' = 0 must be not removed during an expiry callback") !=
         std::string::npos);
   CHECK(kill_if_message.find("kill_if") != std::string::npos);
   CHECK(clear_message.find("clear") != std::string::npos);
@@ -393,26 +397,30 @@ TEST_CASE("the game features' arguments: removals in an expiry callback, buffers
   const Game before = system;
   // Copy-out: a stride below 3 and a buffer too short are reported; nothing is written.
   std::vector<float> buffer(5, -1.0f);
-  CHECK(invalid_argument_of([&] { system.copy_positions(std::span<float>(buffer), 2); })
-            .find("copy_positions: argument 'stride' = 2 must be >= 3") != std::string::npos);
-  CHECK(invalid_argument_of([&] { system.copy_positions(std::span<float>(buffer), 3); })
-            .find("copy_positions: argument 'out' = 5 must be a buffer of at least") !=
+  CHECK(invalid_argument_of([&] {
+          system.copy_positions(std::span<float>(buffer), 2);
+        }).find("copy_positions: argument 'stride' = 2 must be >= 3") != std::string::npos);
+  CHECK(invalid_argument_of([&] {
+          system.copy_positions(std::span<float>(buffer), 3);
+        }).find("copy_positions: argument 'out' = 5 must be a buffer of at least") !=
         std::string::npos);
   CHECK(buffer == std::vector<float>(5, -1.0f));
   // A stride so large that (size() - 1) * stride + 3 wraps around to a small count: the
   // needed size saturates instead, so the buffer is refused and nothing is written.
   const std::size_t wrapping = std::numeric_limits<std::size_t>::max() - 1;  // 1 * it + 3 = 1
   REQUIRE(system.size() == 2);
-  CHECK(invalid_argument_of([&] { system.copy_positions(std::span<float>(buffer), wrapping); })
-            .find("copy_positions: argument 'out' = 5 must be a buffer of at least") !=
+  CHECK(invalid_argument_of([&] {
+          system.copy_positions(std::span<float>(buffer), wrapping);
+        }).find("copy_positions: argument 'out' = 5 must be a buffer of at least") !=
         std::string::npos);
   CHECK(buffer == std::vector<float>(5, -1.0f));
   // Alpha outside [0, 1] (or NaN), for the packed buffer and for a buffer of Vector3.
   std::vector<Vector3<float>> vectors(2, Vector3<float>{-1.0f, -1.0f, -1.0f});
   for (const float alpha : {-0.5f, 1.5f, std::numeric_limits<float>::quiet_NaN()}) {
     CAPTURE(alpha);
-    CHECK(invalid_argument_of([&] { (void)system.interpolated_position(0, alpha); })
-              .find("interpolated_position: argument 'alpha'") != std::string::npos);
+    CHECK(invalid_argument_of([&] {
+            (void)system.interpolated_position(0, alpha);
+          }).find("interpolated_position: argument 'alpha'") != std::string::npos);
     CHECK(invalid_argument_of([&] {
             system.copy_interpolated_positions(alpha, std::span<float>(buffer));
           }).find("must be in [0, 1]") != std::string::npos);
@@ -454,15 +462,18 @@ TEST_CASE("FixedStep and the trajectory queries report bad arguments and keep th
   FixedStep<double> clock(1.0 / 64, 4);
   CHECK(invalid_argument_of([&] { clock.set_step(0.0); }).find("set_step: argument 'step' = 0") !=
         std::string::npos);
-  CHECK(invalid_argument_of([&] { clock.set_max_steps(0); })
-            .find("set_max_steps: argument 'max_steps' = 0 must be >= 1") != std::string::npos);
-  CHECK(invalid_argument_of([&] { clock.set_max_steps(-5); })
-            .find("set_max_steps: argument 'max_steps' = -5 must be >= 1") != std::string::npos);
+  CHECK(invalid_argument_of([&] {
+          clock.set_max_steps(0);
+        }).find("set_max_steps: argument 'max_steps' = 0 must be >= 1") != std::string::npos);
+  CHECK(invalid_argument_of([&] {
+          clock.set_max_steps(-5);
+        }).find("set_max_steps: argument 'max_steps' = -5 must be >= 1") != std::string::npos);
   CHECK(clock.step() == 1.0 / 64);
   CHECK(clock.max_steps() == 4);
   (void)clock.advance(1.0 / 128);
-  CHECK(invalid_argument_of([&] { (void)clock.advance(-1.0); })
-            .find("advance: argument 'frame_time' = -1") != std::string::npos);
+  CHECK(invalid_argument_of([&] {
+          (void)clock.advance(-1.0);
+        }).find("advance: argument 'frame_time' = -1") != std::string::npos);
   CHECK(clock.accumulated() == 1.0 / 128);
   // With a handler that returns, a rejected frame takes no step and draws where the clock
   // stands: half way to the next step.
@@ -478,16 +489,18 @@ TEST_CASE("FixedStep and the trajectory queries report bad arguments and keep th
 
   Particle<double, damping::Exact, position::Exact> shell;
   shell.set_velocity({0, 10, 0});
-  CHECK(invalid_argument_of([&] { (void)state_at(shell, -1.0); })
-            .find("state_at: argument 'time' = -1") != std::string::npos);
+  CHECK(invalid_argument_of([&] {
+          (void)state_at(shell, -1.0);
+        }).find("state_at: argument 'time' = -1") != std::string::npos);
   CHECK(invalid_argument_of([&] {
           (void)time_to_reach(shell, Axis::y, std::numeric_limits<double>::infinity());
         }).find("time_to_reach: argument 'value'") != std::string::npos);
 }
 
-TEST_CASE("spawn_burst takes its particles back when a rejected one's report throws, or the generator") {
-  using Game = ParticleSystem<float, damping::None, position::Euler, features::Lifetime,
-                              features::Handles>;
+TEST_CASE(
+    "spawn_burst takes its particles back when a rejected one's report throws, or the generator") {
+  using Game =
+      ParticleSystem<float, damping::None, position::Euler, features::Lifetime, features::Handles>;
   Game system = three_particles<Game>();
   const Game before = system;
   const typename Game::Handle first = system.handle(0);
@@ -556,13 +569,17 @@ TEST_CASE("spawn_burst's generator may not remove or step, and replacing the par
   }
   // A refused kill, then a throw: the rollback leaves exactly the particles of before.
   Game rolled = before;
-  CHECK_THROWS_AS((void)rolled.spawn_burst(3, [&](std::size_t k) {
-    if (k == 1) {
-      static_cast<void>(invalid_argument_of([&] { rolled.kill(0); }));
-      throw std::runtime_error("generator");
-    }
-    return std::tuple{Vector3<float>{100.0f + float(k), 0, 0}, Vector3<float>{}};
-  }), std::runtime_error);
+  CHECK_THROWS_AS(
+      (void)rolled.spawn_burst(
+          3,
+          [&](std::size_t k) {
+            if (k == 1) {
+              static_cast<void>(invalid_argument_of([&] { rolled.kill(0); }));
+              throw std::runtime_error("generator");
+            }
+            return std::tuple{Vector3<float>{100.0f + float(k), 0, 0}, Vector3<float>{}};
+          }),
+      std::runtime_error);
   CHECK(same_particles(rolled, before));
   // The generator assigns the system another state, then throws: that state stays whole.
   Game other = three_particles<Game>();
@@ -570,13 +587,17 @@ TEST_CASE("spawn_burst's generator may not remove or step, and replacing the par
   for (int i = 0; i < 3; ++i) other.spawn({-1.0f - float(i), 0, 0}, {});  // five, not before's
   const Game other_before = other;
   Game replaced = before;
-  CHECK_THROWS_AS((void)replaced.spawn_burst(3, [&](std::size_t k) {
-    if (k == 1) {
-      replaced = other;
-      throw std::runtime_error("generator");
-    }
-    return std::tuple{Vector3<float>{100.0f + float(k), 0, 0}, Vector3<float>{}};
-  }), std::runtime_error);
+  CHECK_THROWS_AS(
+      (void)replaced.spawn_burst(
+          3,
+          [&](std::size_t k) {
+            if (k == 1) {
+              replaced = other;
+              throw std::runtime_error("generator");
+            }
+            return std::tuple{Vector3<float>{100.0f + float(k), 0, 0}, Vector3<float>{}};
+          }),
+      std::runtime_error);
   CHECK(same_particles(replaced, other_before));
   // Without a throw the burst ends at the replacement, and names none as its own.
   Game ended = before;
@@ -590,10 +611,12 @@ TEST_CASE("spawn_burst's generator may not remove or step, and replacing the par
 TEST_CASE("begin_step names itself in its report, step names step") {
   ParticleSystem<float> system = three_particles<ParticleSystem<float>>();
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  CHECK(invalid_argument_of([&] { (void)system.begin_step(nan); })
-            .find("begin_step: argument 'duration' = nan") != std::string::npos);
-  CHECK(invalid_argument_of([&] { system.step(nan); })
-            .find("pointmass: step: argument 'duration' = nan") != std::string::npos);
+  CHECK(invalid_argument_of([&] {
+          (void)system.begin_step(nan);
+        }).find("begin_step: argument 'duration' = nan") != std::string::npos);
+  CHECK(invalid_argument_of([&] {
+          system.step(nan);
+        }).find("pointmass: step: argument 'duration' = nan") != std::string::npos);
 }
 
 namespace {
@@ -612,8 +635,7 @@ TEST_CASE("spawn_burst names the element whose particle it rejects, and only ins
   });
   // Element 3 of 5 is rejected (a handler that returns: it is skipped).
   const std::size_t added = system.spawn_burst(5, [&](std::size_t k) {
-    return std::pair{Vector3<float>{float(k), 0, 0},
-                     Vector3<float>{k == 3 ? inf : 0.0f, 0, 0}};
+    return std::pair{Vector3<float>{float(k), 0, 0}, Vector3<float>{k == 3 ? inf : 0.0f, 0, 0}};
   });
   (void)system.spawn(Vector3<float>{0, inf, 0}, Vector3<float>{});  // after the burst
   // Element 1 of 2 is rejected by a handler that throws: the exception leaves the burst
@@ -652,8 +674,9 @@ TEST_CASE("spawn_burst names the element whose particle it rejects, and only ins
   }
 }
 
-TEST_CASE_TEMPLATE("the positions relative to a camera refuse a non-finite origin and write nothing",
-                   S, float, Precision<float, double>, Precision<float, Compensated<float>>) {
+TEST_CASE_TEMPLATE(
+    "the positions relative to a camera refuse a non-finite origin and write nothing", S, float,
+    Precision<float, double>, Precision<float, Compensated<float>>) {
   using Value = position_value_t<S>;
   ParticleSystem<S> system;
   system.spawn(Vector3<Value>{Value(1e6), Value(2), Value(-3)}, Vector3<float>{});
@@ -662,20 +685,23 @@ TEST_CASE_TEMPLATE("the positions relative to a camera refuse a non-finite origi
   particle.set_position(Vector3<Value>{Value(1e6), Value(2), Value(-3)});
   const Vector3<Value> good{Value(1e6), Value(0), Value(0)};
   const Vector3<float> unwritten{7.0f, 7.0f, 7.0f};
-  for (const Value bad : {std::numeric_limits<Value>::quiet_NaN(),
-                          std::numeric_limits<Value>::infinity(),
-                          -std::numeric_limits<Value>::infinity()}) {
+  for (const Value bad :
+       {std::numeric_limits<Value>::quiet_NaN(), std::numeric_limits<Value>::infinity(),
+        -std::numeric_limits<Value>::infinity()}) {
     for (int axis = 0; axis < 3; ++axis) {
       Vector3<Value> origin = good;
       (axis == 0 ? origin.x : axis == 1 ? origin.y : origin.z) = bad;
       std::vector<Vector3<float>> buffer(2, unwritten);
-      CHECK(invalid_argument_of([&] { system.positions_relative_to(origin, buffer); })
-                .find("positions_relative_to: argument 'origin'") != std::string::npos);
+      CHECK(invalid_argument_of([&] {
+              system.positions_relative_to(origin, buffer);
+            }).find("positions_relative_to: argument 'origin'") != std::string::npos);
       CHECK(buffer == std::vector<Vector3<float>>(2, unwritten));
-      CHECK(invalid_argument_of([&] { (void)system.position_relative_to(1, origin); })
-                .find("position_relative_to: argument 'origin'") != std::string::npos);
-      CHECK(invalid_argument_of([&] { (void)particle.position_relative_to(origin); })
-                .find("position_relative_to: argument 'origin'") != std::string::npos);
+      CHECK(invalid_argument_of([&] {
+              (void)system.position_relative_to(1, origin);
+            }).find("position_relative_to: argument 'origin'") != std::string::npos);
+      CHECK(invalid_argument_of([&] {
+              (void)particle.position_relative_to(origin);
+            }).find("position_relative_to: argument 'origin'") != std::string::npos);
     }
   }
   // A finite origin is taken.
@@ -685,8 +711,10 @@ TEST_CASE_TEMPLATE("the positions relative to a camera refuse a non-finite origi
   CHECK(buffer[0] == particle.position_relative_to(good));
 }
 
-TEST_CASE_TEMPLATE("a negative, NaN or infinite duration is reported by update_force, apply and "
-                   "update_forces, and no force is added", R, float, double) {
+TEST_CASE_TEMPLATE(
+    "a negative, NaN or infinite duration is reported by update_force, apply and "
+    "update_forces, and no force is added",
+    R, float, double) {
   const forces::Gravity<R> gravity(Vector3<R>{R(0), R(-10), R(0)});
   const forces::Drag<R> drag(R(1), R(0));
   Particle<R> particle;
@@ -701,12 +729,15 @@ TEST_CASE_TEMPLATE("a negative, NaN or infinite duration is reported by update_f
   for (const R bad : {R(-1), -std::numeric_limits<R>::denorm_min(),
                       std::numeric_limits<R>::quiet_NaN(), std::numeric_limits<R>::infinity()}) {
     CAPTURE(bad);
-    CHECK(invalid_argument_of([&] { forces::update_force(gravity, particle, bad); })
-              .find("forces::update_force: argument 'duration'") != std::string::npos);
-    CHECK(invalid_argument_of([&] { forces::apply(drag, bodies, bad); })
-              .find("forces::apply: argument 'duration'") != std::string::npos);
-    CHECK(invalid_argument_of([&] { registry.update_forces(bad); })
-              .find("ForceRegistry::update_forces: argument 'duration'") != std::string::npos);
+    CHECK(invalid_argument_of([&] {
+            forces::update_force(gravity, particle, bad);
+          }).find("forces::update_force: argument 'duration'") != std::string::npos);
+    CHECK(invalid_argument_of([&] {
+            forces::apply(drag, bodies, bad);
+          }).find("forces::apply: argument 'duration'") != std::string::npos);
+    CHECK(invalid_argument_of([&] {
+            registry.update_forces(bad);
+          }).find("ForceRegistry::update_forces: argument 'duration'") != std::string::npos);
     CHECK(particle.force_accumulator() == Vector3<R>{});
     CHECK(f == std::array<Vector3<R>, 2>{});
   }
@@ -728,7 +759,7 @@ TEST_CASE("damped_oscillator reports an argument outside its domain and returns 
     double t;
     const char* argument;
   };
-  const Bad cases[] = {{-1, 0, x0, v0, 1, "w0_squared"}, {nan, 0, x0, v0, 1, "w0_squared"},
+  const Bad cases[] = {{-1, 0, x0, v0, 1, "w0_squared"},  {nan, 0, x0, v0, 1, "w0_squared"},
                        {inf, 0, x0, v0, 1, "w0_squared"}, {1, -1, x0, v0, 1, "gamma"},
                        {1, nan, x0, v0, 1, "gamma"},      {1, 0, {nan, 0, 0}, v0, 1, "x0"},
                        {1, 0, x0, {0, inf, 0}, 1, "v0"},  {1, 0, x0, v0, -1, "t"},

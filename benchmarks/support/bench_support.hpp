@@ -49,13 +49,13 @@ struct StaggeredArrays {
   /// Every value `value`.
   StaggeredArrays(std::size_t count, R value) {
     const std::size_t span = (count * sizeof(R) + 4095) / 4096 * 4096 + 448;
-    block = static_cast<std::byte*>(::operator new(6 * span, std::align_val_t{64}));
+    block = static_cast<std::byte*>(::operator new (6 * span, std::align_val_t{64}));
     for (std::size_t k = 0; k < 6; ++k) {
       array[k] = reinterpret_cast<R*>(block + k * span);
       std::fill(array[k], array[k] + count, value);
     }
   }
-  ~StaggeredArrays() { ::operator delete(block, std::align_val_t{64}); }
+  ~StaggeredArrays() { ::operator delete (block, std::align_val_t{64}); }
   StaggeredArrays(const StaggeredArrays&) = delete;
   StaggeredArrays& operator=(const StaggeredArrays&) = delete;
   std::byte* block = nullptr;
@@ -64,8 +64,8 @@ struct StaggeredArrays {
 
 // Read-modify-write of six arrays: the memory bound of a step of six arrays.
 template <class R>
-void rmw(R* __restrict a0, R* __restrict a1, R* __restrict a2, R* __restrict a3,
-         R* __restrict a4, R* __restrict a5, std::size_t n, R c) {
+void rmw(R* __restrict a0, R* __restrict a1, R* __restrict a2, R* __restrict a3, R* __restrict a4,
+         R* __restrict a5, std::size_t n, R c) {
   for (std::size_t i = 0; i < n; ++i) {
     a0[i] += c, a1[i] += c, a2[i] += c, a3[i] += c, a4[i] += c, a5[i] += c;
   }

@@ -40,7 +40,7 @@
 #define POINTMASS_VERSION_MAJOR 0
 #define POINTMASS_VERSION_MINOR 1
 #define POINTMASS_VERSION_PATCH 0
-#define POINTMASS_VERSION                                                                  \
+#define POINTMASS_VERSION \
   (POINTMASS_VERSION_MAJOR * 10000 + POINTMASS_VERSION_MINOR * 100 + POINTMASS_VERSION_PATCH)
 
 #if defined(__CUDACC__)
@@ -160,12 +160,10 @@ inline std::atomic<ContractHandler> contract_handler{&default_contract_handler};
 /// Installs `handler` (nullptr restores the default) and returns the one it replaces.
 inline ContractHandler set_contract_handler(ContractHandler handler) noexcept {
   return shared_state::contract_handler.exchange(handler != nullptr ? handler
-                                                               : &default_contract_handler);
+                                                                    : &default_contract_handler);
 }
 
-inline ContractHandler contract_handler() noexcept {
-  return shared_state::contract_handler.load();
-}
+inline ContractHandler contract_handler() noexcept { return shared_state::contract_handler.load(); }
 
 namespace shared_state {
 /// The element a many-valued call is checking on this thread (ContractViolation::within and
@@ -219,8 +217,8 @@ class ReportingElement {
 template <class T>
 [[gnu::cold]] [[gnu::noinline]] void report_scalar(const char* function, const char* argument,
                                                    const char* requirement, T value) {
-  ContractViolation violation{function, argument, requirement,
-                              {static_cast<long double>(value), 0.0L, 0.0L}, 1, {}};
+  ContractViolation violation{
+      function, argument, requirement, {static_cast<long double>(value), 0.0L, 0.0L}, 1, {}};
   std::size_t used = 0;
   append_number(violation.text, used, value);
   report(violation, used);

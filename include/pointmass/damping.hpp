@@ -261,8 +261,8 @@ struct Exact {
     const R divisor = detail::select_if_less(x, R(0), x, R(-1));
     const R phi1 = detail::select_if_less(x, R(0), power.kept_minus_one / divisor, R(1));
     const R series_x = detail::select_if_less(R(-1), x, x, R(0));
-    const R phi2 = detail::select_if_less(R(-1), x, detail::phi_series<2>(series_x),
-                                          (phi1 - R(1)) / divisor);
+    const R phi2 =
+        detail::select_if_less(R(-1), x, detail::phi_series<2>(series_x), (phi1 - R(1)) / divisor);
     // d = 0 keeps nothing, not even this step's push: the limit k -> -infinity (phi1 = -1 / x
     // would leave a tiny remainder of t ln 0's finite stand-in).
     const R d = state.value();
@@ -293,14 +293,14 @@ concept DampingPolicy = requires(const Vector3<float>& vf, float tf, const Vecto
   { typename D::template State<double>{}.value() } -> std::same_as<double>;
   {
     D::velocity(vf, vf, tf, D::factors(typename D::template State<float>{}, tf))
-  } -> std::same_as<Vector3<float>>;
+    } -> std::same_as<Vector3<float>>;
   {
     D::velocity(vd, vd, td, D::factors(typename D::template State<double>{}, td))
-  } -> std::same_as<Vector3<double>>;
+    } -> std::same_as<Vector3<double>>;
   { typename D::template State<long double>{}.value() } -> std::same_as<long double>;
   {
     D::velocity(vl, vl, tl, D::factors(typename D::template State<long double>{}, tl))
-  } -> std::same_as<Vector3<long double>>;
+    } -> std::same_as<Vector3<long double>>;
 };
 
 namespace detail {
@@ -347,4 +347,3 @@ struct NoKeptFactors {};
 }  // namespace detail
 
 }  // namespace pointmass
-

@@ -143,8 +143,8 @@ struct handles_of {
 };
 template <class First, class... Rest>
 struct handles_of<First, Rest...> {
-  using type = std::conditional_t<is_handles<First>::value, First,
-                                  typename handles_of<Rest...>::type>;
+  using type =
+      std::conditional_t<is_handles<First>::value, First, typename handles_of<Rest...>::type>;
 };
 
 /// The user columns among Features, in order, as a std::tuple of features::Column types.
@@ -210,33 +210,33 @@ T element_of(T* Class::*);
 
 // The table: one line per array, in block order (the order of `Column`).
 //   X(name,            element type,   stored when)
-#define POINTMASS_DETAIL_COLUMNS(X)                             \
-  X(position_x,         position_element, true)                 \
-  X(position_y,         position_element, true)                 \
-  X(position_z,         position_element, true)                 \
-  X(position_error_x,   R,              compensated_positions)  \
-  X(position_error_y,   R,              compensated_positions)  \
-  X(position_error_z,   R,              compensated_positions)  \
-  X(velocity_x,         R,              true)                   \
-  X(velocity_y,         R,              true)                   \
-  X(velocity_z,         R,              true)                   \
-  X(acceleration_x,     R,              per_particle_acceleration) \
-  X(acceleration_y,     R,              per_particle_acceleration) \
-  X(acceleration_z,     R,              per_particle_acceleration) \
-  X(inverse_mass,       R,              has_forces)             \
-  X(force_x,            R,              has_forces)             \
-  X(force_y,            R,              has_forces)             \
-  X(force_z,            R,              has_forces)             \
-  X(damping,            damping_column_t, per_particle_damping) \
-  X(damping_log_hi,     R,              per_particle_log_damping) \
-  X(damping_log_lo,     R,              per_particle_log_damping) \
-  X(damping_retention,  R,              per_particle_retention) \
-  X(age,                R,              has_lifetime)           \
-  X(lifetime,           R,              has_lifetime)           \
-  X(previous_position_x, position_element, has_interpolation)   \
-  X(previous_position_y, position_element, has_interpolation)   \
-  X(previous_position_z, position_element, has_interpolation)   \
-  X(handle_slot,        std::uint32_t,  has_handles)
+#define POINTMASS_DETAIL_COLUMNS(X)                           \
+  X(position_x, position_element, true)                       \
+  X(position_y, position_element, true)                       \
+  X(position_z, position_element, true)                       \
+  X(position_error_x, R, compensated_positions)               \
+  X(position_error_y, R, compensated_positions)               \
+  X(position_error_z, R, compensated_positions)               \
+  X(velocity_x, R, true)                                      \
+  X(velocity_y, R, true)                                      \
+  X(velocity_z, R, true)                                      \
+  X(acceleration_x, R, per_particle_acceleration)             \
+  X(acceleration_y, R, per_particle_acceleration)             \
+  X(acceleration_z, R, per_particle_acceleration)             \
+  X(inverse_mass, R, has_forces)                              \
+  X(force_x, R, has_forces)                                   \
+  X(force_y, R, has_forces)                                   \
+  X(force_z, R, has_forces)                                   \
+  X(damping, damping_column_t, per_particle_damping)          \
+  X(damping_log_hi, R, per_particle_log_damping)              \
+  X(damping_log_lo, R, per_particle_log_damping)              \
+  X(damping_retention, R, per_particle_retention)             \
+  X(age, R, has_lifetime)                                     \
+  X(lifetime, R, has_lifetime)                                \
+  X(previous_position_x, position_element, has_interpolation) \
+  X(previous_position_y, position_element, has_interpolation) \
+  X(previous_position_z, position_element, has_interpolation) \
+  X(handle_slot, std::uint32_t, has_handles)
 
 #define POINTMASS_DETAIL_MEMBER(name, type, stored) type* name = nullptr;
 #define POINTMASS_DETAIL_ENTRY(name, type, stored) ColumnEntry<&Arrays::name, (stored)>{},
@@ -267,8 +267,7 @@ struct SystemLayout {
   /// and `damping_log_lo`. A step then reads plain arrays (an array of three-member structs
   /// is a strided load, which g++ -O2 does not vectorise); a policy of the user's with another
   /// state keeps that state whole in `damping`. load_damping / store_damping convert.
-  static constexpr bool log_damping_state =
-      std::is_same_v<damping_state, damping::LogDamping<R>>;
+  static constexpr bool log_damping_state = std::is_same_v<damping_state, damping::LogDamping<R>>;
   static constexpr bool value_damping_state =
       log_damping_state || std::is_same_v<damping_state, damping::StoredDamping<R>>;
   static constexpr bool per_particle_log_damping = per_particle_damping && log_damping_state;
@@ -278,8 +277,8 @@ struct SystemLayout {
   /// step) computes no exponential and reads 4 bytes instead of d and ln d; a new length
   /// refreshes the column first (ParticleSystem::step, StepParameters::refresh).
   static constexpr bool per_particle_retention =
-      per_particle_damping && (std::is_same_v<D, damping::PerSecond> ||
-                               std::is_same_v<D, damping::AccelerateThenDamp>);
+      per_particle_damping &&
+      (std::is_same_v<D, damping::PerSecond> || std::is_same_v<D, damping::AccelerateThenDamp>);
   static constexpr bool per_particle_acceleration =
       contains_v<features::PerParticleAcceleration, Features...>;
   static constexpr bool has_forces = contains_v<features::ForceAccumulator, Features...>;
@@ -300,8 +299,8 @@ struct SystemLayout {
   POINTMASS_HD static constexpr damping_state load_damping(const Arrays& arrays,
                                                            std::size_t i) noexcept {
     if constexpr (log_damping_state) {
-      return damping_state(arrays.damping[i], detail::SplitLog<R>{arrays.damping_log_hi[i],
-                                                                  arrays.damping_log_lo[i]});
+      return damping_state(arrays.damping[i],
+                           detail::SplitLog<R>{arrays.damping_log_hi[i], arrays.damping_log_lo[i]});
     } else if constexpr (value_damping_state) {
       return damping_state(arrays.damping[i]);
     } else {
@@ -327,10 +326,11 @@ struct SystemLayout {
   /// would have kill read and write outside the table): ParticleSystem::column gives them
   /// read-only (set_damping writes the damping columns together; spawn and kill the slots).
   template <Column C>
-  static constexpr bool read_only =
-      C == Column::handle_slot || C == Column::damping_retention ||
-      ((log_damping_state || per_particle_retention) && C == Column::damping) ||
-      (log_damping_state && (C == Column::damping_log_hi || C == Column::damping_log_lo));
+  static constexpr bool read_only = C == Column::handle_slot || C == Column::damping_retention ||
+                                    ((log_damping_state || per_particle_retention) &&
+                                     C == Column::damping) ||
+                                    (log_damping_state &&
+                                     (C == Column::damping_log_hi || C == Column::damping_log_lo));
   /// The element type of user column I.
   template <std::size_t I>
   using user_element_t = typename std::tuple_element_t<I, user_columns>::type;
@@ -357,7 +357,6 @@ struct SystemLayout {
   }
 
  public:
-
   /// Every column's entry, in block order.
   static constexpr auto columns = std::tuple{POINTMASS_DETAIL_COLUMNS(POINTMASS_DETAIL_ENTRY)};
 
@@ -403,18 +402,21 @@ struct SystemLayout {
   }
 
   /// How many arrays the block holds.
-  static constexpr std::size_t array_count = std::apply(
-      [](auto... entry) { return (std::size_t{decltype(entry)::stored} + ...); }, columns) +
+  static constexpr std::size_t array_count =
+      std::apply([](auto... entry) { return (std::size_t{decltype(entry)::stored} + ...); },
+                 columns) +
       user_column_count;
 
   /// Bytes each particle occupies in the arrays.
-  static constexpr std::size_t bytes_per_particle = std::apply(
-      [](auto... entry) {
-        return ((decltype(entry)::stored ? sizeof(decltype(element_of(decltype(entry)::member)))
-                                         : std::size_t{0}) +
-                ...);
-      },
-      columns) + UserColumnSizes<user_columns>::bytes;
+  static constexpr std::size_t bytes_per_particle =
+      std::apply(
+          [](auto... entry) {
+            return ((decltype(entry)::stored ? sizeof(decltype(element_of(decltype(entry)::member)))
+                                             : std::size_t{0}) +
+                    ...);
+          },
+          columns) +
+      UserColumnSizes<user_columns>::bytes;
 
   /// The largest element of any stored array.
   static constexpr std::size_t largest_element = std::apply(

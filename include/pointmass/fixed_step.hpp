@@ -53,9 +53,9 @@ class FixedStep {
  public:
   /// What a frame is to do.
   struct Frame {
-    int steps = 0;      ///< fixed steps to take now
-    R alpha = R(0);     ///< the fraction of a step left over, in [0, 1): draw at it
-    R dropped = R(0);   ///< seconds dropped by the cap in this frame (0 normally)
+    int steps = 0;     ///< fixed steps to take now
+    R alpha = R(0);    ///< the fraction of a step left over, in [0, 1): draw at it
+    R dropped = R(0);  ///< seconds dropped by the cap in this frame (0 normally)
   };
 
   /// 60 Hz, at most 8 steps a frame.

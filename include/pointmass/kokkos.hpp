@@ -120,11 +120,10 @@ template <class System, class ExecutionSpace>
 void kokkos_step_chunks(const ExecutionSpace& space, const typename System::Arrays& arrays,
                         const typename System::StepParameters& parameters) {
   constexpr std::size_t chunk = KokkosStepChunks<System>::chunk;
-  Kokkos::parallel_for(
-      "pointmass::KokkosSystem::step",
-      Kokkos::RangePolicy<ExecutionSpace, Kokkos::IndexType<std::size_t>>(
-          space, 0, (arrays.size + chunk - 1) / chunk),
-      KokkosStepChunks<System>{arrays, parameters});
+  Kokkos::parallel_for("pointmass::KokkosSystem::step",
+                       Kokkos::RangePolicy<ExecutionSpace, Kokkos::IndexType<std::size_t>>(
+                           space, 0, (arrays.size + chunk - 1) / chunk),
+                       KokkosStepChunks<System>{arrays, parameters});
 }
 
 template <class System>
@@ -274,7 +273,7 @@ class KokkosSystem {
   template <Column C>
     requires(System::template stores<C>)
   View<C> view() const noexcept {
-  // clang-format on
+    // clang-format on
     return View<C>(arrays_.*(Layout::template entry<C>::member), size());
   }
 
@@ -338,9 +337,9 @@ class KokkosSystem {
       const std::size_t kept = count - expired;
       if (kept > 0) {
         if (sources_.extent(0) < expired) {
-          sources_ = IndexView(Kokkos::view_alloc(Kokkos::WithoutInitializing,
-                                                  "pointmass::KokkosSystem::sources"),
-                               capacity_);
+          sources_ = IndexView(
+              Kokkos::view_alloc(Kokkos::WithoutInitializing, "pointmass::KokkosSystem::sources"),
+              capacity_);
         }
         using Rank = detail::KokkosRankSurvivors<System, IndexView>;
         using Fill = detail::KokkosFillHoles<System, IndexView>;
@@ -374,12 +373,10 @@ class KokkosSystem {
   // ParticleSystem's block places them (detail/soa_block.hpp says why).
   void allocate(std::size_t capacity) {
     std::size_t total = 0;
-    Layout::for_each_array(arrays_, [&](auto* array) {
-      total += span_bytes(capacity * sizeof(*array));
-    });
+    Layout::for_each_array(arrays_,
+                           [&](auto* array) { total += span_bytes(capacity * sizeof(*array)); });
     block_ = Kokkos::View<std::byte*, MemorySpace>(
-        Kokkos::view_alloc(Kokkos::WithoutInitializing, "pointmass::KokkosSystem::arrays"),
-        total);
+        Kokkos::view_alloc(Kokkos::WithoutInitializing, "pointmass::KokkosSystem::arrays"), total);
     capacity_ = capacity;
     std::size_t offset = 0;
     Layout::for_each_array(arrays_, [&](auto*& array) {

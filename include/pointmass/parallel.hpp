@@ -124,7 +124,7 @@ template <class ExecutionPolicy, class S, class D, class P, class... Features, c
            std::is_invocable_v<OnExpire&, std::size_t>)
 void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system,
           typename ParticleSystem<S, D, P, Features...>::real duration, OnExpire&& on_expire) {
-// clang-format on
+  // clang-format on
   if (detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration)) {
     detail::SystemAccess::finish_step(system, duration, on_expire);
   }

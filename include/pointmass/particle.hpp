@@ -33,8 +33,8 @@
 #include <type_traits>
 
 #include "config.hpp"
-#include "detail/validate.hpp"
 #include "damping.hpp"
+#include "detail/validate.hpp"
 #include "position.hpp"
 #include "precision.hpp"
 #include "quantities.hpp"
@@ -54,8 +54,8 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 /// (docs/design.md). Same arithmetic, same bits either way.
 template <class D, class P, class Position, class Velocity, class Acceleration, class Time,
           class Factors>
-POINTMASS_HD constexpr void advance(Position& p, Velocity& v, const Acceleration& a,
-                                    const Time& t, const Factors& factors) noexcept {
+POINTMASS_HD constexpr void advance(Position& p, Velocity& v, const Acceleration& a, const Time& t,
+                                    const Factors& factors) noexcept {
   const Velocity v0 = v;
   const Velocity v1 = D::velocity(v0, a, t, factors);
   v = v1;
@@ -70,9 +70,8 @@ namespace detail {
 /// added to the stored position in the position's. p is the element; lo the error
 /// term (Compensated only; untouched otherwise). Particle::integrate computes the same.
 template <class D, class P, class Storage, class R, class Factors>
-POINTMASS_HD constexpr void advance_stored(typename Storage::element& p, R& lo, R& v,
-                                           const R& a, const R& t,
-                                           const Factors& factors) noexcept {
+POINTMASS_HD constexpr void advance_stored(typename Storage::element& p, R& lo, R& v, const R& a,
+                                           const R& t, const Factors& factors) noexcept {
   R displacement = -R(0);  // -0: the policy's p0 + x is then x, exactly (above)
   advance<D, P>(displacement, v, a, t, factors);
   if constexpr (Storage::compensated) {
@@ -129,9 +128,9 @@ class BasicParticle {
   /// True for the reference engine's own equations (AccelerateThenDamp with Euler, plain
   /// numbers and positions), whose factor is a call to the C library's power function: a new
   /// step length then takes the engine's order (integrate).
-  static constexpr bool engine_order =
-      std::is_same_v<D, damping::AccelerateThenDamp> && std::is_same_v<P, position::Euler> &&
-      plain_position && std::is_same_v<time_type, real>;
+  static constexpr bool engine_order = std::is_same_v<D, damping::AccelerateThenDamp> &&
+                                       std::is_same_v<P, position::Euler> && plain_position &&
+                                       std::is_same_v<time_type, real>;
   static_assert(plain_position || PositionPrecision<position_precision, real>,
                 "BasicParticle: the quantity set's position_precision must be a Real at least "
                 "as wide as its real, or Compensated<real>");
@@ -143,10 +142,10 @@ class BasicParticle {
 
   POINTMASS_HD constexpr Vector3<position_type> position() const noexcept {
     if constexpr (Storage::compensated) {
-      return typed<position_type>(Vector3<position_value>{
-          Storage::value_of(position_.x, position_error_.x),
-          Storage::value_of(position_.y, position_error_.y),
-          Storage::value_of(position_.z, position_error_.z)});
+      return typed<position_type>(
+          Vector3<position_value>{Storage::value_of(position_.x, position_error_.x),
+                                  Storage::value_of(position_.y, position_error_.y),
+                                  Storage::value_of(position_.z, position_error_.z)});
     } else {
       return typed<position_type>(position_);
     }
@@ -157,8 +156,8 @@ class BasicParticle {
   /// A non-finite origin is a contract violation, checked when POINTMASS_CHECKS is on (then
   /// reported, and the result is zero).
   template <Real T = float>
-  POINTMASS_HD constexpr Vector3<T> position_relative_to(
-      const Vector3<position_type>& origin) const noexcept(!POINTMASS_HOST_CHECKS) {
+  POINTMASS_HD constexpr Vector3<T> position_relative_to(const Vector3<position_type>& origin) const
+      noexcept(!POINTMASS_HOST_CHECKS) {
     const Vector3<position_value> o = raw(origin);
 #if POINTMASS_HOST_CHECKS
     if (!detail::check_finite("position_relative_to", "origin", o)) return {};
@@ -179,9 +178,8 @@ class BasicParticle {
     return position_;
   }
   /// Compensated<real> only: the error part lo of hi + lo.
-  POINTMASS_HD constexpr Vector3<real> stored_position_error() const noexcept
-    requires Storage::compensated
-  {
+  POINTMASS_HD constexpr Vector3<real> stored_position_error()
+      const noexcept requires Storage::compensated {
     return position_error_;
   }
   POINTMASS_HD constexpr Vector3<velocity_type> velocity() const noexcept {
@@ -225,10 +223,12 @@ class BasicParticle {
     }
   }
   constexpr void set_velocity(const Vector3<velocity_type>& velocity) {
-    if (const auto v = raw(velocity); detail::check_finite("set_velocity", "velocity", v)) velocity_ = v;
+    if (const auto v = raw(velocity); detail::check_finite("set_velocity", "velocity", v))
+      velocity_ = v;
   }
   constexpr void set_acceleration(const Vector3<acceleration_type>& acceleration) {
-    if (const auto a = raw(acceleration); detail::check_finite("set_acceleration", "acceleration", a)) {
+    if (const auto a = raw(acceleration);
+        detail::check_finite("set_acceleration", "acceleration", a)) {
       acceleration_ = a;
     }
   }
@@ -281,8 +281,7 @@ class BasicParticle {
   /// at -O3 it called the step; a call costs about as much as the step, and the force the
   /// caller has just added is stored and reloaded across it). A new step length goes to
   /// integrate_new_length, which the compiler inlines or calls as it judges.
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr void integrate(
-      const time_type& duration) {
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr void integrate(const time_type& duration) {
 #if POINTMASS_HOST_CHECKS
     if (!detail::check_duration("integrate", Q::raw(duration))) return;
 #endif
@@ -305,7 +304,7 @@ class BasicParticle {
   /// keeps none): 0 <= duration, finite.
   POINTMASS_HD constexpr void integrate_new_length(const time_type& duration) {
     const real t = Q::raw(duration);
-    if (detail::is_zero(t)) return;  // nothing changes, the accumulated force waits
+    if (detail::is_zero(t)) return;        // nothing changes, the accumulated force waits
     if (detail::is_zero(inverse_mass_)) {  // immovable: forces cannot move it
       force_accumulator_ = {};
       return;
@@ -324,8 +323,8 @@ class BasicParticle {
         const damping_factors factors = detail::scalar_factors<D>(damping_, duration);
         cache_.factors = factors;
         position_ = position_ + velocity_ * t;
-        velocity_ = (velocity_ + (acceleration_ + force_accumulator_ * inverse_mass_) * t) *
-                    factors.kept;
+        velocity_ =
+            (velocity_ + (acceleration_ + force_accumulator_ * inverse_mass_) * t) * factors.kept;
         force_accumulator_ = {};
       } else {
         position_ = position_ + velocity_ * t;
@@ -345,8 +344,8 @@ class BasicParticle {
   }
 
   /// The step once its damping factors are known (duration > 0, inverse mass > 0).
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr void step_with(const time_type& duration,
-                                        const damping_factors factors) noexcept {
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr void step_with(
+      const time_type& duration, const damping_factors factors) noexcept {
     const Vector3<acceleration_type> resulting_acceleration =
         typed<acceleration_type>(acceleration_) +
         typed<force_type>(force_accumulator_) * Q::template make<inverse_mass_type>(inverse_mass_);
@@ -399,7 +398,8 @@ class BasicParticle {
   [[no_unique_address]] std::conditional_t<Storage::compensated, Vector3<real>, NoPositionError>
       position_error_{};
   [[no_unique_address]] std::conditional_t<caches_factors, detail::KeptFactors<D, real>,
-                                           detail::NoKeptFactors> cache_{};
+                                           detail::NoKeptFactors>
+      cache_{};
 };
 
 /// The particle over plain numbers (SI units by convention: metres, seconds, kilograms). R is

@@ -83,7 +83,7 @@ template <class S, DampingPolicy D = damping::PerSecond, class P = position::Eul
 class ParticleSystem
     : public detail::SystemKernel<real_of_t<S>, D, P, detail::SystemLayout<S, D, Features...>>,
       public detail::SystemFacets<detail::SystemStateBase<S, D, P, Features...>> {
-// clang-format on
+  // clang-format on
   using State = detail::SystemState<S, D, P, Features...>;
   using Facets = detail::SystemFacets<detail::SystemStateBase<S, D, P, Features...>>;
   using R = real_of_t<S>;
@@ -91,8 +91,8 @@ class ParticleSystem
   using Kernel = typename State::Kernel;
   using State::acceleration_;
   using State::damping_;
-  using State::removing_;
   using State::load;
+  using State::removing_;
   using State::store;
   using State::valid_index;
   // P is checked here, with one sentence, rather than as a constraint (see position.hpp).
@@ -172,16 +172,12 @@ class ParticleSystem
   // --- uniform values ------------------------------------------------------------------------
 
   /// The acceleration of every particle (gravity); finite.
-  void set_acceleration(const Vector3<R>& acceleration)
-    requires(!per_particle_acceleration)
-  {
+  void set_acceleration(const Vector3<R>& acceleration) requires(!per_particle_acceleration) {
     if (detail::check_finite("set_acceleration", "acceleration", acceleration)) {
       acceleration_ = acceleration;
     }
   }
-  Vector3<R> acceleration() const noexcept
-    requires(!per_particle_acceleration)
-  {
+  Vector3<R> acceleration() const noexcept requires(!per_particle_acceleration) {
     return acceleration_;
   }
   /// The damping of every particle, in [0, 1] (per second or per frame, as the policy says).
@@ -189,17 +185,13 @@ class ParticleSystem
   void set_damping(R damping)
     requires(stores_damping && !per_particle_damping)
   {
-  // clang-format on
+    // clang-format on
     if (detail::check_damping("set_damping", damping)) {
       damping_ = damping_state(damping);
       State::forget_factors();
     }
   }
-  R damping() const noexcept
-    requires(!per_particle_damping)
-  {
-    return damping_.value();
-  }
+  R damping() const noexcept requires(!per_particle_damping) { return damping_.value(); }
 
   // --- spawning and killing ------------------------------------------------------------------
 
@@ -220,7 +212,7 @@ class ParticleSystem
     requires(sizeof...(Values) > 0 && sizeof...(Values) == Layout::user_column_count)
   std::size_t spawn(const Vector3<position_value>& position, const Vector3<R>& velocity,
                     const Values&... values) {
-  // clang-format on
+    // clang-format on
     const std::size_t i = spawn(position, velocity);
     if (i != npos) {
       State::store_user_columns(i, std::make_index_sequence<sizeof...(Values)>{}, values...);
@@ -355,18 +347,15 @@ class ParticleSystem
       store(arrays().velocity_x, arrays().velocity_y, arrays().velocity_z, i, velocity);
     }
   }
-  void set_acceleration(std::size_t i, const Vector3<R>& acceleration)
-    requires per_particle_acceleration
-  {
+  void set_acceleration(std::size_t i,
+                        const Vector3<R>& acceleration) requires per_particle_acceleration {
     if (detail::check_index("set_acceleration", i, size()) &&
         detail::check_finite("set_acceleration", "acceleration", acceleration)) {
       store(arrays().acceleration_x, arrays().acceleration_y, arrays().acceleration_z, i,
             acceleration);
     }
   }
-  void set_damping(std::size_t i, R damping)
-    requires per_particle_damping
-  {
+  void set_damping(std::size_t i, R damping) requires per_particle_damping {
     if (detail::check_index("set_damping", i, size()) &&
         detail::check_damping("set_damping", damping)) {
       State::store_damping(i, damping_state(damping));
@@ -399,7 +388,7 @@ class ParticleSystem
   template <class OnExpire>
     requires(has_lifetime && std::is_invocable_v<OnExpire&, std::size_t>)
   void step(R duration, OnExpire&& on_expire) {
-  // clang-format on
+    // clang-format on
     if constexpr (PositionPolicyFor<P, D>) {
       if (State::walk(duration)) State::expire(on_expire);
     }
@@ -441,7 +430,7 @@ class ParticleSystem
   template <class OnExpire>
     requires(has_lifetime && std::is_invocable_v<OnExpire&, std::size_t>)
   void finish_step(OnExpire&& on_expire) {
-  // clang-format on
+    // clang-format on
     arrays_changed();
     State::expire(on_expire, "finish_step");
   }

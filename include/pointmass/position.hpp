@@ -49,8 +49,8 @@ struct Euler {
   template <class D>
   static constexpr bool exact_for_constant_acceleration = false;
   template <class P, class V, class A, class T, class F>
-  POINTMASS_HD static constexpr P position(const P& p0, const V& v0, const V&, const A&,
-                                           const T& t, const F&) noexcept {
+  POINTMASS_HD static constexpr P position(const P& p0, const V& v0, const V&, const A&, const T& t,
+                                           const F&) noexcept {
     return p0 + v0 * t;
   }
 };
@@ -85,8 +85,8 @@ struct SemiImplicit {
   template <class D>
   static constexpr bool exact_for_constant_acceleration = false;
   template <class P, class V, class A, class T, class F>
-  POINTMASS_HD static constexpr P position(const P& p0, const V&, const V& v1, const A&,
-                                           const T& t, const F&) noexcept {
+  POINTMASS_HD static constexpr P position(const P& p0, const V&, const V& v1, const A&, const T& t,
+                                           const F&) noexcept {
     return p0 + v1 * t;
   }
 };
@@ -156,13 +156,12 @@ inline constexpr int order_v = detail::stated_order<D>() < detail::stated_order<
 
 /// A position policy usable with damping policy D (checked for float and double).
 template <class P, class D>
-concept PositionPolicyFor =
-    DampingPolicy<D> &&
+concept PositionPolicyFor = DampingPolicy<D> &&
     requires(const Vector3<float>& vf, float tf, const damping_factors_t<D, float>& ff,
              const Vector3<double>& vd, double td, const damping_factors_t<D, double>& fd) {
-      { P::position(vf, vf, vf, vf, tf, ff) } -> std::same_as<Vector3<float>>;
-      { P::position(vd, vd, vd, vd, td, fd) } -> std::same_as<Vector3<double>>;
-    };
+  { P::position(vf, vf, vf, vf, tf, ff) } -> std::same_as<Vector3<float>>;
+  { P::position(vd, vd, vd, vd, td, fd) } -> std::same_as<Vector3<double>>;
+};
 
 namespace detail {
 

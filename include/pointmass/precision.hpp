@@ -77,10 +77,9 @@ struct CompensatedOf<Compensated<R>> {
 /// A position precision usable with arithmetic R: a Real with at least R's digits, or
 /// Compensated<R> of R itself.
 template <class Position, class R>
-concept PositionPrecision =
-    Real<R> && ((Real<Position> && std::numeric_limits<Position>::digits >=
-                                       std::numeric_limits<R>::digits) ||
-                std::same_as<typename detail::CompensatedOf<Position>::type, R>);
+concept PositionPrecision = Real<R> &&
+    ((Real<Position> && std::numeric_limits<Position>::digits >= std::numeric_limits<R>::digits) ||
+     std::same_as<typename detail::CompensatedOf<Position>::type, R>);
 
 namespace detail {
 
@@ -147,8 +146,9 @@ template <class S>
 concept PrecisionChoice = requires {
   typename detail::PrecisionTraits<S>::real;
   typename detail::PrecisionTraits<S>::position;
-} && PositionPrecision<typename detail::PrecisionTraits<S>::position,
-                       typename detail::PrecisionTraits<S>::real>;
+}
+&&PositionPrecision<typename detail::PrecisionTraits<S>::position,
+                    typename detail::PrecisionTraits<S>::real>;
 
 /// The arithmetic Real of a precision choice (velocity, acceleration, mass, time, ...).
 template <class S>
@@ -182,8 +182,8 @@ POINTMASS_HD constexpr T round_once(W z, W r) noexcept {
       const T largest = std::numeric_limits<T>::max();
       const T below =
           __builtin_bit_cast(T, static_cast<Bits>(__builtin_bit_cast(Bits, largest) - 1u));
-      const W midpoint = static_cast<W>(largest) +
-                         (static_cast<W>(largest) - static_cast<W>(below)) / W(2);
+      const W midpoint =
+          static_cast<W>(largest) + (static_cast<W>(largest) - static_cast<W>(below)) / W(2);
       if (real_equal(z, midpoint) && r < W(0)) return largest;
       if (real_equal(z, -midpoint) && r > W(0)) return -largest;
       return y;
@@ -273,8 +273,7 @@ struct PositionStorage {
   POINTMASS_HD static constexpr T relative(element p, value origin) noexcept {
     if constexpr (std::numeric_limits<element>::digits < std::numeric_limits<T>::digits) {
       return static_cast<T>(p) - static_cast<T>(origin);
-    } else if constexpr (std::numeric_limits<element>::digits ==
-                         std::numeric_limits<T>::digits) {
+    } else if constexpr (std::numeric_limits<element>::digits == std::numeric_limits<T>::digits) {
       return static_cast<T>(p - origin);
     } else {
       const element s = p - origin;
@@ -380,7 +379,7 @@ struct PositionStorage<Compensated<R>> {
     const value s2 = s + l;
     const value b2 = s2 - s;
     const value ne2 = ((s2 - b2) - s) + (b2 - l);  // -e2: s + lo = s2 + e2
-    const value nt = ne + ne2;                      // -t, rounded: e + e2 = t + te
+    const value nt = ne + ne2;                     // -t, rounded: e + e2 = t + te
     const value bt = nt - ne;
     const value nte = ((nt - bt) - ne) + (bt - ne2);  // -te
     const value z = s2 - nt;                          // s2 + t = z + ze
@@ -394,7 +393,6 @@ struct PositionStorage<Compensated<R>> {
 
 /// What a position of precision choice S is read and set as, per component.
 template <class S>
-using position_value_t =
-    typename detail::PositionStorage<position_precision_of_t<S>>::value;
+using position_value_t = typename detail::PositionStorage<position_precision_of_t<S>>::value;
 
 }  // namespace pointmass

@@ -61,7 +61,9 @@ concept QuantitySet = Real<typename Q::real> && requires {
   typename Q::mass;
   typename Q::inverse_mass;
   typename Q::force;
-  { Q::raw(Q::template make<typename Q::length>(typename Q::real{})) } -> std::same_as<typename Q::real>;
+  {
+    Q::raw(Q::template make<typename Q::length>(typename Q::real{}))
+    } -> std::same_as<typename Q::real>;
 };
 
 namespace detail {
@@ -80,7 +82,7 @@ template <class Q>
     typename Q::position;
   }
 struct QuantityPositions<Q> {
-// clang-format on
+  // clang-format on
   using precision = typename Q::position_precision;
   using type = typename Q::position;
 };

@@ -56,9 +56,8 @@ struct FloatBits {
 };
 
 template <class R>
-inline constexpr bool has_ieee_bits_v =
-    (std::same_as<R, float> && sizeof(float) == 4) ||
-    (std::same_as<R, double> && sizeof(double) == 8);
+inline constexpr bool has_ieee_bits_v = (std::same_as<R, float> && sizeof(float) == 4) ||
+                                        (std::same_as<R, double> && sizeof(double) == 8);
 
 }  // namespace detail
 
@@ -166,7 +165,7 @@ POINTMASS_HD constexpr R exact_sqrt(R x) noexcept {
   const auto bits = static_cast<std::uint64_t>(__builtin_bit_cast(Bits, x));
   std::uint64_t m = bits & (implicit - 1);
   const int biased = static_cast<int>(bits >> (digits - 1));
-  int e = 0;  // x = m 2^e
+  int e = 0;          // x = m 2^e
   if (biased == 0) {  // subnormal: normalise
     e = 1 - bias - (digits - 1);
     while ((m & implicit) == 0) {

@@ -97,9 +97,8 @@ R bisect(const Flight& flight, R value, R lo, R hi) noexcept {
   }
   const R error_lo = flight.position(lo) - value;
   const R error_hi = flight.position(hi) - value;
-  return (error_lo < R(0) ? -error_lo : error_lo) < (error_hi < R(0) ? -error_hi : error_hi)
-             ? lo
-             : hi;
+  return (error_lo < R(0) ? -error_lo : error_lo) < (error_hi < R(0) ? -error_hi : error_hi) ? lo
+                                                                                             : hi;
 }
 
 }  // namespace detail
@@ -113,7 +112,8 @@ TrajectoryState<R> state_at(const Particle<R, D, position::Exact>& particle, R t
     return {particle.position(), particle.velocity()};
   }
   typename D::template State<R> state{};
-  if constexpr (std::is_same_v<D, damping::Exact>) state = typename D::template State<R>(particle.damping());
+  if constexpr (std::is_same_v<D, damping::Exact>)
+    state = typename D::template State<R>(particle.damping());
   Vector3<R> p = particle.position();
   Vector3<R> v = particle.velocity();
   advance<D, position::Exact>(p, v, particle.acceleration(), time, D::factors(state, time));
@@ -153,8 +153,8 @@ std::optional<R> time_to_reach(const Particle<R, D, position::Exact>& particle, 
   if ((flight.v0 > R(0) && flight.a < R(0)) || (flight.v0 < R(0) && flight.a > R(0))) {
     R k = R(0);
     if constexpr (std::is_same_v<D, damping::Exact>) k = flight.damping.log_value();
-    const R ratio = flight.v0 / flight.a;  // < 0
-    const R x = k * ratio;                 // >= 0
+    const R ratio = flight.v0 / flight.a;                             // < 0
+    const R x = k * ratio;                                            // >= 0
     const R shrink = real_equal(x, R(0)) ? R(1) : std::log1p(x) / x;  // ln(1 + x)/x in (0, 1]
     turn = real_isfinite(x) && real_isfinite(ratio) ? -ratio * shrink : R(0);
   }

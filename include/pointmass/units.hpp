@@ -132,8 +132,8 @@ struct SiQuantities {
 // exactly these types, so a policy that got a dimension wrong fails to compile.
 static_assert(std::is_same_v<decltype(velocity<double>{} * time<double>{}), length<double>>);
 static_assert(std::is_same_v<decltype(acceleration<double>{} * time<double>{}), velocity<double>>);
-static_assert(std::is_same_v<decltype(force<double>{} * inverse_mass<double>{}),
-                             acceleration<double>>);
+static_assert(
+    std::is_same_v<decltype(force<double>{} * inverse_mass<double>{}), acceleration<double>>);
 
 namespace detail {
 
@@ -166,10 +166,11 @@ inline constexpr bool always_false_v = false;
 // the function, the quantity it expects and its unit. It also catches a scalar quantity of
 // another Real, which Boost.Units would otherwise convert implicitly from float to double.
 #define POINTMASS_UNITS_REJECT(function, Expected, given, what)                                \
-  static_assert(detail::same_unit_v<given, Expected>,                                         \
-                #function ": wrong dimension: the argument must be " what);                   \
+  static_assert(detail::same_unit_v<given, Expected>,                                          \
+                #function ": wrong dimension: the argument must be " what);                    \
   static_assert(!detail::same_unit_v<given, Expected> || detail::same_real_v<given, Expected>, \
-                #function ": the argument's quantities are of another Real than the "          \
+                #function                                                                      \
+                ": the argument's quantities are of another Real than the "                    \
                 "particle's (float and double are not mixed)")
 
 /// A particle whose every input and output is an SI quantity of R (see the file comment).
@@ -179,7 +180,7 @@ inline constexpr bool always_false_v = false;
 template <class S, DampingPolicy D = damping::PerSecond, class P = position::Euler>
   requires(Real<S> || PrecisionChoice<S>)
 class Particle : public BasicParticle<SiQuantities<canonical_precision_t<S>>, D, P> {
-// clang-format on
+  // clang-format on
   using Base = BasicParticle<SiQuantities<canonical_precision_t<S>>, D, P>;
   using R = typename Base::real;
 

@@ -78,7 +78,7 @@ inline constexpr bool is_vector3<Vector3<T>> = true;
 template <class V>
   requires(detail::HasXyzMembers<V> && (!detail::is_vector3<V>))
 struct VectorTraits<V> {
-// clang-format on
+  // clang-format on
   using value_type = std::remove_cvref_t<decltype(std::declval<const V&>().x)>;
   POINTMASS_HD static constexpr value_type x(const V& v) noexcept { return v.x; }
   POINTMASS_HD static constexpr value_type y(const V& v) noexcept { return v.y; }
@@ -113,7 +113,7 @@ concept MakeableUserVectorOf = !is_vector3<std::remove_cvref_t<V>> && requires(c
     VectorTraits<V>::make(typename VectorTraits<V>::value_type(t),
                           typename VectorTraits<V>::value_type(t),
                           typename VectorTraits<V>::value_type(t))
-  } -> std::same_as<V>;
+    } -> std::same_as<V>;
 };
 
 /// Every From converts to To without loss: the same type, or floating-point types where To has
@@ -158,7 +158,7 @@ struct Vector3 {
     requires(detail::MakeableUserVectorOf<V, T>)
   POINTMASS_HD constexpr explicit(
       !detail::converts_exactly_v<T, typename VectorTraits<V>::value_type>) operator V() const {
-  // clang-format on
+    // clang-format on
     using U = typename VectorTraits<V>::value_type;
     return VectorTraits<V>::make(static_cast<U>(x), static_cast<U>(y), static_cast<U>(z));
   }
@@ -203,8 +203,7 @@ struct Vector3 {
   /// Makes this a unit vector in the same direction, for any finite non-zero vector (no
   /// overflow or underflow in between). The zero vector stays zero (no division by zero, no
   /// NaN); a vector with an infinite or NaN component is left as it is.
-  POINTMASS_HD constexpr Vector3& normalize() noexcept
-    requires Real<T>;
+  POINTMASS_HD constexpr Vector3& normalize() noexcept requires Real<T>;
 
   friend constexpr bool operator==(const Vector3&, const Vector3&) = default;
 };
@@ -312,9 +311,7 @@ POINTMASS_HD constexpr T magnitude(const Vector3<T>& v) noexcept {
 }
 
 template <class T>
-POINTMASS_HD constexpr Vector3<T>& Vector3<T>::normalize() noexcept
-  requires Real<T>
-{
+POINTMASS_HD constexpr Vector3<T>& Vector3<T>::normalize() noexcept requires Real<T> {
   const T square = square_magnitude(*this);
   if (detail::square_is_exact_enough(square)) return *this /= real_sqrt(square);
   const T scale = detail::largest_component(*this);

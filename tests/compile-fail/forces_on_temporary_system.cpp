@@ -5,9 +5,9 @@
 #include <pointmass/forces.hpp>
 #include <pointmass/particle_system.hpp>
 
-using Sparks = pointmass::ParticleSystem<float, pointmass::damping::PerSecond,
-                                         pointmass::position::Euler,
-                                         pointmass::features::ForceAccumulator>;
+using Sparks =
+    pointmass::ParticleSystem<float, pointmass::damping::PerSecond, pointmass::position::Euler,
+                              pointmass::features::ForceAccumulator>;
 
 int main() {
   const pointmass::forces::Drag<float> drag(0.4f, 0.1f);

@@ -7,10 +7,9 @@
 #include <pointmass/particle_system.hpp>
 
 int main() {
-  using Sparks = pointmass::ParticleSystem<pointmass::Precision<float, double>,
-                                           pointmass::damping::PerSecond,
-                                           pointmass::position::Euler,
-                                           pointmass::features::ForceAccumulator>;
+  using Sparks =
+      pointmass::ParticleSystem<pointmass::Precision<float, double>, pointmass::damping::PerSecond,
+                                pointmass::position::Euler, pointmass::features::ForceAccumulator>;
   Sparks sparks;
   sparks.spawn({1e6, 0.0, 0.0}, {1.0f, 0.0f, 0.0f});
   const pointmass::forces::Drag<float> drag(0.1f, 0.01f);

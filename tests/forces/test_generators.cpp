@@ -61,21 +61,21 @@ TEST_CASE_TEMPLATE("anchored spring: -k (|d| - L) d/|d|, pushing when compressed
                    double) {
   const forces::AnchoredSpring<R> spring({R(1), R(0), R(0)}, R(10), R(2));
   // Stretched by 1 along +x: pulled back with 10 N.
-  CHECK(close(force_on(spring, body_at<R>({R(4), R(0), R(0)})),
-              Vector3<R>{R(-10), R(0), R(0)}, R(2)));
+  CHECK(close(force_on(spring, body_at<R>({R(4), R(0), R(0)})), Vector3<R>{R(-10), R(0), R(0)},
+              R(2)));
   // Regression (the reference engine takes |(|d| - L)|, so a compressed spring pulls):
   // compressed by 1, the body is pushed away from the anchor.
-  CHECK(close(force_on(spring, body_at<R>({R(2), R(0), R(0)})),
-              Vector3<R>{R(10), R(0), R(0)}, R(2)));
+  CHECK(
+      close(force_on(spring, body_at<R>({R(2), R(0), R(0)})), Vector3<R>{R(10), R(0), R(0)}, R(2)));
   // 3-4-5 triangle: |d| = 5, extension 3, force -10 * 3 * (3, 4, 0) / 5.
-  CHECK(close(force_on(spring, body_at<R>({R(4), R(4), R(0)})),
-              Vector3<R>{R(-18), R(-24), R(0)}, R(4)));
+  CHECK(close(force_on(spring, body_at<R>({R(4), R(4), R(0)})), Vector3<R>{R(-18), R(-24), R(0)},
+              R(4)));
   // At the anchor the direction is undefined: no force, no NaN.
   CHECK(force_on(spring, body_at<R>({R(1), R(0), R(0)})) == Vector3<R>{});
 }
 
-TEST_CASE_TEMPLATE("spring between particles pulls them together, equal and opposite", R,
-                   float, double) {
+TEST_CASE_TEMPLATE("spring between particles pulls them together, equal and opposite", R, float,
+                   double) {
   Particle<R> a = body_at<R>({R(0), R(0), R(0)});
   Particle<R> b = body_at<R>({R(0), R(4), R(0)});
   const forces::Spring<Particle<R>> on_a(b, R(3), R(1));
@@ -97,28 +97,27 @@ TEST_CASE_TEMPLATE("bungee pulls when stretched and never pushes", R, float, dou
   const forces::Bungee<Particle<R>> bungee(other, R(5), R(2));
   // Regression (the reference engine multiplies by -k (L - |d|): a stretched bungee pushes
   // the ends apart). Stretched by 1 at (3, 0, 0): pulled back towards the other end.
-  CHECK(close(force_on(bungee, body_at<R>({R(3), R(0), R(0)})),
-              Vector3<R>{R(-5), R(0), R(0)}, R(2)));
+  CHECK(
+      close(force_on(bungee, body_at<R>({R(3), R(0), R(0)})), Vector3<R>{R(-5), R(0), R(0)}, R(2)));
   // Slack or exactly at rest length: nothing.
   CHECK(force_on(bungee, body_at<R>({R(1), R(0), R(0)})) == Vector3<R>{});
   CHECK(force_on(bungee, body_at<R>({R(0), R(2), R(0)})) == Vector3<R>{});
   // The anchored one alike.
   const forces::AnchoredBungee<R> anchored({R(0), R(10), R(0)}, R(5), R(2));
-  CHECK(close(force_on(anchored, body_at<R>({R(0), R(7), R(0)})),
-              Vector3<R>{R(0), R(5), R(0)}, R(2)));
+  CHECK(close(force_on(anchored, body_at<R>({R(0), R(7), R(0)})), Vector3<R>{R(0), R(5), R(0)},
+              R(2)));
   CHECK(force_on(anchored, body_at<R>({R(0), R(9), R(0)})) == Vector3<R>{});
 }
 
-TEST_CASE_TEMPLATE("buoyancy is rho V g times the submerged fraction, always upwards", R,
-                   float, double) {
+TEST_CASE_TEMPLATE("buoyancy is rho V g times the submerged fraction, always upwards", R, float,
+                   double) {
   // Half-height 0.5 m, 0.1 m^3, water surface at y = 0, water, g = 9.807.
   const forces::Buoyancy<R> buoyancy(R(0.5), R(0.1), R(0));
   const R full = R(1000) * R(0.1) * R(9.807);  // 980.7 N
   CHECK(force_on(buoyancy, body_at<R>({R(0), R(2), R(0)})) == Vector3<R>{});
   CHECK(force_on(buoyancy, body_at<R>({R(0), R(0.5), R(0)})) == Vector3<R>{});
   CHECK(close(force_on(buoyancy, body_at<R>({R(0), R(0), R(0)})).y, full / R(2), R(4)));
-  CHECK(close(force_on(buoyancy, body_at<R>({R(0), R(-0.25), R(0)})).y, full * R(0.75),
-              R(4)));
+  CHECK(close(force_on(buoyancy, body_at<R>({R(0), R(-0.25), R(0)})).y, full * R(0.75), R(4)));
   // Fully submerged: the whole weight of the displaced water. Regression: the reference
   // engine adds rho V (980 times too small with g = 9.807: a mass, not a force).
   CHECK(close(force_on(buoyancy, body_at<R>({R(0), R(-0.5), R(0)})).y, full, R(4)));
@@ -140,8 +139,8 @@ TEST_CASE_TEMPLATE("buoyancy is rho V g times the submerged fraction, always upw
   CHECK(close(force_on(sea, body_at<R>({R(0), R(-5), R(0)})).y, R(20500), R(4)));
 }
 
-TEST_CASE_TEMPLATE("stiff spring: finite in every damping regime, nothing when immovable", R,
-                   float, double) {
+TEST_CASE_TEMPLATE("stiff spring: finite in every damping regime, nothing when immovable", R, float,
+                   double) {
   const Particle<R> body = body_at<R>({R(1), R(0), R(0)}, {R(0), R(1), R(0)}, R(1));
   // Regression: the reference engine's fake spring takes sqrt(4 k - c^2), NaN over-damped.
   const forces::PositionOnlyStiffSpring<R> over({}, R(1), R(10));
@@ -198,8 +197,9 @@ TEST_CASE_TEMPLATE("bad parameters are rejected, naming the argument and its val
   const auto msg_damping = violation_message(
       [] { forces::PositionOnlyStiffSpring<R>({}, R(1), std::numeric_limits<R>::quiet_NaN()); });
   CHECK(msg_damping.find("'damping' = nan") != std::string::npos);
-  const auto msg_gravity = violation_message(
-      [] { forces::Gravity<R>({R(0), std::numeric_limits<R>::infinity(), R(0)}); });
+  const auto msg_gravity = violation_message([] {
+    forces::Gravity<R>({R(0), std::numeric_limits<R>::infinity(), R(0)});
+  });
   CHECK(msg_gravity.find("'gravity'") != std::string::npos);
   // Valid parameters raise nothing.
   CHECK(violation_message([] { forces::Buoyancy<R>(R(1), R(1), R(0)); }) == "(no violation)");
@@ -244,10 +244,8 @@ TEST_CASE_TEMPLATE("a constructor that rejects any argument leaves the generator
   CHECK(force_on(forces::Buoyancy<R>(R(-0.5), R(0.1), R(10)), body) == none);
   CHECK(force_on(forces::Buoyancy<R>(R(0.5), R(0.1), nan), body) == none);
   CHECK(force_on(forces::Buoyancy<R>(R(0.5), R(0.1), R(10), R(-1)), body) == none);
-  CHECK(force_on(forces::Buoyancy<R>(R(0.5), R(0.1), R(10), R(1000), R(-9.807)), body) ==
-        none);
-  CHECK(force_on(forces::PositionOnlyStiffSpring<R>({nan, R(0), R(0)}, R(50), R(1)), body) ==
-        none);
+  CHECK(force_on(forces::Buoyancy<R>(R(0.5), R(0.1), R(10), R(1000), R(-9.807)), body) == none);
+  CHECK(force_on(forces::PositionOnlyStiffSpring<R>({nan, R(0), R(0)}, R(50), R(1)), body) == none);
   CHECK(force_on(forces::PositionOnlyStiffSpring<R>({}, R(50), R(-1)), body) == none);
   // Two bad arguments: each is reported.
   CHECK(force_on(forces::Drag<R>(R(-1), R(-2)), body) == none);
@@ -279,14 +277,10 @@ namespace {
 
 template <class R, class G>
 void check_batch_matches_particles(const G& generator) {
-  const std::array<Vector3<R>, 4> positions{{{R(1), R(2), R(3)},
-                                             {R(-0.3), R(0.2), R(0)},
-                                             {R(0), R(-4), R(1)},
-                                             {R(5), R(5), R(-5)}}};
-  const std::array<Vector3<R>, 4> velocities{{{R(0), R(1), R(0)},
-                                              {R(2), R(-1), R(0.5)},
-                                              {R(0), R(0), R(0)},
-                                              {R(-3), R(0), R(1)}}};
+  const std::array<Vector3<R>, 4> positions{
+      {{R(1), R(2), R(3)}, {R(-0.3), R(0.2), R(0)}, {R(0), R(-4), R(1)}, {R(5), R(5), R(-5)}}};
+  const std::array<Vector3<R>, 4> velocities{
+      {{R(0), R(1), R(0)}, {R(2), R(-1), R(0.5)}, {R(0), R(0), R(0)}, {R(-3), R(0), R(1)}}};
   const std::array<R, 4> inverse_masses{R(1), R(0.5), R(0), R(4)};
   const R dt = R(1) / R(30);
 
@@ -322,13 +316,13 @@ TEST_CASE_TEMPLATE("a batch gets the same bits as particles, generator by genera
   check_batch_matches_particles<R>(forces::AnchoredSpring<R>({R(0), R(1), R(0)}, R(8), R(1)));
   check_batch_matches_particles<R>(forces::AnchoredBungee<R>({R(0), R(1), R(0)}, R(8), R(3)));
   check_batch_matches_particles<R>(forces::Buoyancy<R>(R(0.5), R(0.01), R(0)));
-  check_batch_matches_particles<R>(forces::PositionOnlyStiffSpring<R>({R(0), R(1), R(0)}, R(50), R(3)));
+  check_batch_matches_particles<R>(
+      forces::PositionOnlyStiffSpring<R>({R(0), R(1), R(0)}, R(50), R(3)));
 }
 
 TEST_CASE_TEMPLATE("links add equal and opposite spring forces in a batch", R, float, double) {
-  const std::array<Vector3<R>, 3> positions{{{R(0), R(0), R(0)},
-                                             {R(0), R(-3), R(0)},
-                                             {R(0), R(-4), R(0)}}};
+  const std::array<Vector3<R>, 3> positions{
+      {{R(0), R(0), R(0)}, {R(0), R(-3), R(0)}, {R(0), R(-4), R(0)}}};
   const std::array<Vector3<R>, 3> velocities{};
   std::array<Vector3<R>, 3> f{};
   forces::SpanBodies<R> bodies{positions, velocities, {}, f};

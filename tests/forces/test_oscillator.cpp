@@ -81,23 +81,21 @@ std::array<double, 2> odeint_solution(const Regime& r, double t_end) {
     dy[0] = y[1];
     dy[1] = -r.w0_squared * y[0] - 2 * r.gamma * y[1];
   };
-  ode::integrate_adaptive(
-      ode::make_controlled(1e-13, 1e-13, ode::runge_kutta_dopri5<State>()), rhs, s, 0.0, t_end,
-      1e-4);
+  ode::integrate_adaptive(ode::make_controlled(1e-13, 1e-13, ode::runge_kutta_dopri5<State>()), rhs,
+                          s, 0.0, t_end, 1e-4);
   return s;
 }
 
 }  // namespace
 
-TEST_CASE_TEMPLATE("closed form matches the textbook solution in every regime", R, float,
-                   double) {
+TEST_CASE_TEMPLATE("closed form matches the textbook solution in every regime", R, float, double) {
   for (const Regime& r : regimes) {
     for (const double t : {0.0, 1e-6, 0.01, 0.1, 0.7, 2.0, 10.0}) {
       const std::string regime_name = r.name;
       CAPTURE(regime_name);
       CAPTURE(t);
-      const auto s = forces::damped_oscillator<R>(R(r.w0_squared), R(r.gamma),
-                                                  {R(x0), R(0), R(0)}, {R(v0), R(0), R(0)}, R(t));
+      const auto s = forces::damped_oscillator<R>(R(r.w0_squared), R(r.gamma), {R(x0), R(0), R(0)},
+                                                  {R(v0), R(0), R(0)}, R(t));
       const auto expected = textbook(r, t);
       // Conditioning: the result is a sum of terms up to |x0| + |v0| / ... in size, so the
       // tolerance is relative to the initial state's scale (floor 1), a few dozen epsilons.
@@ -110,15 +108,14 @@ TEST_CASE_TEMPLATE("closed form matches the textbook solution in every regime", 
   }
 }
 
-TEST_CASE_TEMPLATE("closed form matches Boost.Odeint's dopri5 in every regime", R, float,
-                   double) {
+TEST_CASE_TEMPLATE("closed form matches Boost.Odeint's dopri5 in every regime", R, float, double) {
   for (const Regime& r : regimes) {
     for (const double t : {0.05, 0.5, 3.0}) {
       const std::string regime_name = r.name;
       CAPTURE(regime_name);
       CAPTURE(t);
-      const auto s = forces::damped_oscillator<R>(R(r.w0_squared), R(r.gamma),
-                                                  {R(x0), R(0), R(0)}, {R(v0), R(0), R(0)}, R(t));
+      const auto s = forces::damped_oscillator<R>(R(r.w0_squared), R(r.gamma), {R(x0), R(0), R(0)},
+                                                  {R(v0), R(0), R(0)}, R(t));
       const auto reference = odeint_solution(r, t);
       // odeint is accurate to about 1e-11 here: for double that is the bound, for float the
       // closed form's own rounding is.
@@ -130,8 +127,10 @@ TEST_CASE_TEMPLATE("closed form matches Boost.Odeint's dopri5 in every regime", 
   }
 }
 
-TEST_CASE_TEMPLATE("closed form just over critical damping: each part of the state to a few "
-                   "epsilons of itself", R, float, double) {
+TEST_CASE_TEMPLATE(
+    "closed form just over critical damping: each part of the state to a few "
+    "epsilons of itself",
+    R, float, double) {
   // gamma just above w0 = 1: lambda = sqrt(gamma^2 - w0^2) is small, and so is lambda t, where
   // e^(-gamma t) sinh(lambda t) / lambda must not come from the difference of two nearly
   // equal exponentials. Released at rest from x0 = 1, the velocity is -w0^2 times that factor
@@ -222,8 +221,8 @@ TEST_CASE_TEMPLATE("stiff spring stays bounded at steps where an integrated spri
   for (const R w0_t : {R(1.67), R(3), R(10), R(100)}) {
     const R dt = R(1) / R(60);
     const R w0 = w0_t / dt;
-    const R stiffness = w0 * w0;        // mass 1
-    const R friction = R(0.2) * w0;     // ratio c / (2 w0) = 0.1
+    const R stiffness = w0 * w0;     // mass 1
+    const R friction = R(0.2) * w0;  // ratio c / (2 w0) = 0.1
     Particle<R, damping::None, position::SemiImplicit> closed_form;
     closed_form.set_position({R(1), R(0), R(0)});
     Particle<R, damping::None, position::SemiImplicit> integrated = closed_form;
@@ -300,21 +299,19 @@ std::vector<double> odeint_x(double stiffness, double friction, double dt, int s
     dy[0] = y[1];
     dy[1] = -stiffness * y[0] - friction * y[1];
   };
-  ode::integrate_const(ode::make_dense_output(1e-12, 1e-12, ode::runge_kutta_dopri5<State>()),
-                       rhs, s, 0.0, steps * dt, dt, [&](const State& y, double) {
-                         xs.push_back(y[0]);
-                       });
+  ode::integrate_const(ode::make_dense_output(1e-12, 1e-12, ode::runge_kutta_dopri5<State>()), rhs,
+                       s, 0.0, steps * dt, dt, [&](const State& y, double) { xs.push_back(y[0]); });
   return xs;
 }
 
 }  // namespace
 
-TEST_CASE_TEMPLATE("spring period: integrated, closed form and odeint agree", R, float,
-                   double) {
+TEST_CASE_TEMPLATE("spring period: integrated, closed form and odeint agree", R, float, double) {
   const double k = two_pi * two_pi;  // mass 1: period 1 s
   const double dt = 1e-3;
   const int steps = 10000;
-  const auto ours = downward_crossings(integrated_x<R, position::SemiImplicit>(k, 0, dt, steps), dt);
+  const auto ours =
+      downward_crossings(integrated_x<R, position::SemiImplicit>(k, 0, dt, steps), dt);
   const auto reference = downward_crossings(odeint_x(k, 0, dt, steps), dt);
   REQUIRE(ours.size() >= 9);
   REQUIRE(reference.size() == ours.size());
@@ -360,8 +357,8 @@ TEST_CASE_TEMPLATE("damped spring decays as the closed form and odeint say", R, 
   CHECK(std::abs(peaks[2] / peaks[1] - expected_ratio) < 2e-3);
 }
 
-TEST_CASE_TEMPLATE("energy on an undamped spring: explicit forms gain, semi-implicit does not",
-                   R, float, double) {
+TEST_CASE_TEMPLATE("energy on an undamped spring: explicit forms gain, semi-implicit does not", R,
+                   float, double) {
   const double k = two_pi * two_pi;
   const double dt = 1.0 / 60;  // w dt = 0.105
   const int steps = 600;       // 10 periods
@@ -393,10 +390,10 @@ namespace {
 /// map is linear; its columns are the steps of (1, 0) and (0, 1).
 double step_spectral_radius(double w0, double zeta, double t) {
   const double gamma = zeta * w0;
-  const auto from_x = forces::damped_oscillator(w0 * w0, gamma, Vector3<double>{1, 0, 0},
-                                                Vector3<double>{}, t);
-  const auto from_v = forces::damped_oscillator(w0 * w0, gamma, Vector3<double>{},
-                                                Vector3<double>{1, 0, 0}, t);
+  const auto from_x =
+      forces::damped_oscillator(w0 * w0, gamma, Vector3<double>{1, 0, 0}, Vector3<double>{}, t);
+  const auto from_v =
+      forces::damped_oscillator(w0 * w0, gamma, Vector3<double>{}, Vector3<double>{1, 0, 0}, t);
   const double a = from_x.position.x;
   const double b = from_v.position.x;
   const double c = (from_x.position.x - 1) / t;

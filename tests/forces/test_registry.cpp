@@ -36,7 +36,8 @@ Particle<R> at(Vector3<R> p) {
 }  // namespace
 
 TEST_CASE_TEMPLATE("registry: add, update, remove, clear", R, float, double) {
-  using Registry = forces::ForceRegistry<Particle<R>, forces::Gravity<R>, forces::AnchoredSpring<R>>;
+  using Registry =
+      forces::ForceRegistry<Particle<R>, forces::Gravity<R>, forces::AnchoredSpring<R>>;
   Registry registry;
   Particle<R> a = at<R>({R(2), R(0), R(0)});
   Particle<R> b = at<R>({R(0), R(0), R(0)});
@@ -81,8 +82,7 @@ TEST_CASE_TEMPLATE("registry: add, update, remove, clear", R, float, double) {
   CHECK(b.force_accumulator() == Vector3<R>{});
 }
 
-TEST_CASE_TEMPLATE("known and type-erased registrations give the same forces", R, float,
-                   double) {
+TEST_CASE_TEMPLATE("known and type-erased registrations give the same forces", R, float, double) {
   forces::ForceRegistry<Particle<R>, forces::Drag<R>, forces::Buoyancy<R>> known;
   forces::ForceRegistry<Particle<R>> erased;  // every generator type-erased
   forces::Drag<R> drag(R(0.3), R(0.02));
@@ -103,9 +103,10 @@ TEST_CASE_TEMPLATE("known and type-erased registrations give the same forces", R
   CHECK(erased.size() == 1);
 }
 
-TEST_CASE_TEMPLATE("registry over a whole simulation step: immovable particles stay put", R,
-                   float, double) {
-  forces::ForceRegistry<Particle<R>, forces::Gravity<R>, forces::PositionOnlyStiffSpring<R>> registry;
+TEST_CASE_TEMPLATE("registry over a whole simulation step: immovable particles stay put", R, float,
+                   double) {
+  forces::ForceRegistry<Particle<R>, forces::Gravity<R>, forces::PositionOnlyStiffSpring<R>>
+      registry;
   forces::Gravity<R> gravity({R(0), R(-10), R(0)});
   forces::PositionOnlyStiffSpring<R> spring({}, R(100), R(1));
   Particle<R> wall = at<R>({R(0), R(1), R(0)});

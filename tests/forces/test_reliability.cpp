@@ -73,8 +73,8 @@ TEST_CASE_TEMPLATE("magnitude and normalized neither overflow nor underflow", R,
         std::sqrt(ordinary.x * ordinary.x + ordinary.y * ordinary.y + ordinary.z * ordinary.z));
 }
 
-TEST_CASE_TEMPLATE("springs and drag far from the origin: finite, and zero when they should be",
-                   R, float, double) {
+TEST_CASE_TEMPLATE("springs and drag far from the origin: finite, and zero when they should be", R,
+                   float, double) {
   const R h = huge<R>;
   const Particle<R> far = body_at<R>({h, h, -h}, {h, -h, h});
   // No stiffness, no drag: no force (before the fix: NaN from 0 * infinity).
@@ -89,12 +89,12 @@ TEST_CASE_TEMPLATE("springs and drag far from the origin: finite, and zero when 
   // Two ends at opposite ends of the range: p - q overflows, a weak spring's force does not.
   const R max = std::numeric_limits<R>::max();
   const Particle<R> top = body_at<R>({max, R(0), R(0)});
-  const Vector3<R> across = force_on(forces::AnchoredSpring<R>({-max, R(0), R(0)}, R(1e-3), R(0)),
-                                     top);
+  const Vector3<R> across =
+      force_on(forces::AnchoredSpring<R>({-max, R(0), R(0)}, R(1e-3), R(0)), top);
   CHECK(close(across.x, R(-2e-3) * max, R(16), R(0)));
   // ... with its rest length: stretched to 2 max from max / 2, it pulls with k 1.5 max.
-  const Vector3<R> stretched = force_on(
-      forces::AnchoredSpring<R>({-max, R(0), R(0)}, R(1e-3), max / R(2)), top);
+  const Vector3<R> stretched =
+      force_on(forces::AnchoredSpring<R>({-max, R(0), R(0)}, R(1e-3), max / R(2)), top);
   CHECK(close(stretched.x, R(-1.5e-3) * max, R(16), R(0)));
   CHECK(stretched.y == R(0));
   // A spring compressed to a length whose square underflows pushes with k (L - |d|).
@@ -113,13 +113,15 @@ TEST_CASE_TEMPLATE("springs and drag far from the origin: finite, and zero when 
 }
 
 #if POINTMASS_CHECKS
-TEST_CASE_TEMPLATE("apply: a force beyond the range on the last body is reported, and no body "
-                   "gets a force", R, float, double) {
+TEST_CASE_TEMPLATE(
+    "apply: a force beyond the range on the last body is reported, and no body "
+    "gets a force",
+    R, float, double) {
   // Drag of 4 |v| on three bodies: 4 N on the first two, beyond the largest R on the last.
   const R max = std::numeric_limits<R>::max();
   const std::array<Vector3<R>, 3> positions{};
-  const std::array<Vector3<R>, 3> velocities{{{R(1), R(0), R(0)}, {R(1), R(0), R(0)},
-                                              {max / R(2), R(0), R(0)}}};
+  const std::array<Vector3<R>, 3> velocities{
+      {{R(1), R(0), R(0)}, {R(1), R(0), R(0)}, {max / R(2), R(0), R(0)}}};
   std::array<Vector3<R>, 3> f{};
   forces::SpanBodies<R> bodies{positions, velocities, {}, f};
   const std::string message =
@@ -135,7 +137,8 @@ TEST_CASE_TEMPLATE("gravity beyond the range is reported, buoyancy with a huge d
   Particle<R> heavy;
   heavy.set_mass(std::numeric_limits<R>::max() / R(4));
   const forces::Gravity<R> gravity({R(0), R(-9.807), R(0)});
-  const std::string message = violation_message([&] { forces::update_force(gravity, heavy, R(0.1)); });
+  const std::string message =
+      violation_message([&] { forces::update_force(gravity, heavy, R(0.1)); });
   CHECK(message.find("forces::update_force: argument 'force' = (0, -inf, 0) must be finite") !=
         std::string::npos);
   CHECK(heavy.force_accumulator() == Vector3<R>{});
@@ -178,15 +181,15 @@ TEST_CASE_TEMPLATE("drag and buoyancy inside their ranges: no sum or product ove
   const R small = R(1) / big;
   const Particle<R> under = body_at<R>({R(0), R(-5), R(0)});  // fully submerged
   CHECK(force_on(forces::Buoyancy<R>(R(1), big, R(0), big, R(0)), under).y == R(0));
-  CHECK(close(force_on(forces::Buoyancy<R>(R(1), big, R(0), big, small), under).y, big, R(4),
-              R(0)));
+  CHECK(
+      close(force_on(forces::Buoyancy<R>(R(1), big, R(0), big, small), under).y, big, R(4), R(0)));
   // The usual case as before: rho V g times the fraction, in that order.
   const forces::Buoyancy<R> water(R(1), R(0.5), R(0), R(1000), R(9.807));
   CHECK(force_on(water, under).y == R(1000) * R(0.5) * R(9.807) * R(1));
 }
 
-TEST_CASE_TEMPLATE("stiff springs: tiny steps, tiny inverse masses, huge stiffness and damping",
-                   R, float, double) {
+TEST_CASE_TEMPLATE("stiff springs: tiny steps, tiny inverse masses, huge stiffness and damping", R,
+                   float, double) {
   const Vector3<R> x{R(1), R(0), R(0)};
   const Vector3<R> v{R(0), R(2), R(0)};
   const forces::PositionOnlyStiffSpring<R> spring({}, R(50), R(3));
@@ -221,8 +224,8 @@ TEST_CASE_TEMPLATE("stiff springs: tiny steps, tiny inverse masses, huge stiffne
 }
 
 TEST_CASE_TEMPLATE("apply_links with a bad index changes nothing", R, float, double) {
-  const std::array<Vector3<R>, 3> positions{{{R(0), R(0), R(0)}, {R(0), R(-3), R(0)},
-                                             {R(0), R(-4), R(0)}}};
+  const std::array<Vector3<R>, 3> positions{
+      {{R(0), R(0), R(0)}, {R(0), R(-3), R(0)}, {R(0), R(-4), R(0)}}};
   const std::array<Vector3<R>, 3> velocities{};
   std::array<Vector3<R>, 3> f{};
   forces::SpanBodies<R> bodies{positions, velocities, {}, f};
@@ -237,14 +240,14 @@ TEST_CASE_TEMPLATE("apply_links with a bad index changes nothing", R, float, dou
   CHECK(f == std::array<Vector3<R>, 3>{});
 }
 
-TEST_CASE_TEMPLATE("an adapter with a span shorter than its size() is reported, with no force",
-                   R, float, double) {
+TEST_CASE_TEMPLATE("an adapter with a span shorter than its size() is reported, with no force", R,
+                   float, double) {
   // size() is the length of the forces (3); every other span is a view of the first 2
   // elements of storage for 3, so a read of element 2 stays inside the storage.
-  const std::array<Vector3<R>, 3> positions{{{R(1), R(0), R(0)}, {R(2), R(0), R(0)},
-                                             {R(3), R(0), R(0)}}};
-  const std::array<Vector3<R>, 3> velocities{{{R(1), R(0), R(0)}, {R(1), R(0), R(0)},
-                                              {R(1), R(0), R(0)}}};
+  const std::array<Vector3<R>, 3> positions{
+      {{R(1), R(0), R(0)}, {R(2), R(0), R(0)}, {R(3), R(0), R(0)}}};
+  const std::array<Vector3<R>, 3> velocities{
+      {{R(1), R(0), R(0)}, {R(1), R(0), R(0)}, {R(1), R(0), R(0)}}};
   const std::array<R, 3> inverse_masses{R(1), R(1), R(1)};
   const std::span<const Vector3<R>> p_all(positions), v_all(velocities);
   const std::span<const R> m_all(inverse_masses);
@@ -258,15 +261,18 @@ TEST_CASE_TEMPLATE("an adapter with a span shorter than its size() is reported, 
   CHECK(violation_message([&] { forces::apply(drag, short_positions, R(0.01)); }) ==
         "pointmass: forces::apply: argument 'positions' = 2 elements for size() = 3 must be at "
         "least size() elements long (size() is the length of the forces)");
-  CHECK(violation_message([&] { forces::apply_links(springs, link_span, short_positions); })
-            .find("forces::apply_links: argument 'positions' = 2 elements for size() = 3") !=
+  CHECK(violation_message([&] {
+          forces::apply_links(springs, link_span, short_positions);
+        }).find("forces::apply_links: argument 'positions' = 2 elements for size() = 3") !=
         std::string::npos);
   forces::SpanBodies<R> short_velocities{p_all, v_all.first(2), m_all, f};
-  CHECK(violation_message([&] { forces::apply(drag, short_velocities, R(0.01)); })
-            .find("'velocities' = 2 elements for size() = 3") != std::string::npos);
+  CHECK(violation_message([&] {
+          forces::apply(drag, short_velocities, R(0.01));
+        }).find("'velocities' = 2 elements for size() = 3") != std::string::npos);
   forces::SpanBodies<R> short_masses{p_all, v_all, m_all.first(1), f};
-  CHECK(violation_message([&] { forces::apply(drag, short_masses, R(0.01)); })
-            .find("'inverse_masses' = 1 elements for size() = 3") != std::string::npos);
+  CHECK(violation_message([&] {
+          forces::apply(drag, short_masses, R(0.01));
+        }).find("'inverse_masses' = 1 elements for size() = 3") != std::string::npos);
   CHECK(f == std::array<Vector3<R>, 3>{});
   // An empty inverse_masses is the uniform one, and longer spans are fine.
   std::array<Vector3<R>, 2> f2{};
@@ -278,19 +284,21 @@ TEST_CASE_TEMPLATE("an adapter with a span shorter than its size() is reported, 
   for (std::size_t i = 0; i < 3; ++i) px[i] = positions[i].x;
   const auto first2 = [](const std::array<R, 3>& a) { return std::span<const R>(a).first(2); };
   forces::SoaBodies<R> soa_short_vz{px, py, pz, vx, vy, first2(vz), {}, fx, fy, fz};
-  CHECK(violation_message([&] { forces::apply(drag, soa_short_vz, R(0.01)); })
-            .find("forces::apply: argument 'vz' = 2 elements for size() = 3") !=
-        std::string::npos);
-  CHECK(violation_message([&] { forces::apply_links(springs, link_span, soa_short_vz); })
-            .find("forces::apply_links: argument 'vz' = 2") != std::string::npos);
+  CHECK(violation_message([&] {
+          forces::apply(drag, soa_short_vz, R(0.01));
+        }).find("forces::apply: argument 'vz' = 2 elements for size() = 3") != std::string::npos);
+  CHECK(violation_message([&] {
+          forces::apply_links(springs, link_span, soa_short_vz);
+        }).find("forces::apply_links: argument 'vz' = 2") != std::string::npos);
   forces::SoaBodies<R> soa_short_px{first2(px), py, pz, vx, vy, vz, {}, fx, fy, fz};
-  CHECK(violation_message([&] { forces::apply_links(springs, link_span, soa_short_px); })
-            .find("forces::apply_links: argument 'px' = 2") != std::string::npos);
+  CHECK(violation_message([&] {
+          forces::apply_links(springs, link_span, soa_short_px);
+        }).find("forces::apply_links: argument 'px' = 2") != std::string::npos);
   // The forces are written through fx, fy and fz: fz too short is a write beyond its end.
-  forces::SoaBodies<R> soa_short_fz{px, py, pz, vx, vy, vz, {}, fx, fy,
-                                    std::span<R>(fz).first(2)};
-  CHECK(violation_message([&] { forces::apply(drag, soa_short_fz, R(0.01)); })
-            .find("'fz' = 2 elements for size() = 3") != std::string::npos);
+  forces::SoaBodies<R> soa_short_fz{px, py, pz, vx, vy, vz, {}, fx, fy, std::span<R>(fz).first(2)};
+  CHECK(violation_message([&] {
+          forces::apply(drag, soa_short_fz, R(0.01));
+        }).find("'fz' = 2 elements for size() = 3") != std::string::npos);
   CHECK(fx == std::array<R, 3>{});
   CHECK(fz == std::array<R, 3>{});
 
@@ -299,8 +307,8 @@ TEST_CASE_TEMPLATE("an adapter with a span shorter than its size() is reported, 
   violations = 0;
   forces::apply(drag, short_positions, R(0.01));
   forces::apply_links(springs, link_span, soa_short_px);
-  forces::apply(drag, forces::SoaBodies<R>{px, py, pz, vx, vy, vz, {}, fx, fy,
-                                           std::span<R>(fz).first(2)},
+  forces::apply(drag,
+                forces::SoaBodies<R>{px, py, pz, vx, vy, vz, {}, fx, fy, std::span<R>(fz).first(2)},
                 R(0.01));
   pointmass::set_contract_handler(previous);
   CHECK(violations == 3);

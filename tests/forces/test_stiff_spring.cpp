@@ -78,24 +78,24 @@ double period_of(const std::vector<double>& xs, double dt) {
 
 }  // namespace
 
-TEST_CASE_TEMPLATE("stiff spring advance: the closed form's period and amplitude at every step",
-                   R, float, double) {
+TEST_CASE_TEMPLATE("stiff spring advance: the closed form's period and amplitude at every step", R,
+                   float, double) {
   // Undamped, w0 = 2 pi: period 1 s, amplitude 1. Before the fix (a force landing on the
   // closed form's position only) the period was 1.414 s at each of these steps.
   for (const double dt : {1e-2, 1e-3, 1e-4}) {
     CAPTURE(dt);
     const auto t = stepped<R>(0, dt, long(std::lround(3.0 / dt)));
     CHECK(std::abs(period_of(t.x, dt) - 1.0) < 1e-4);
-    const double amplitude = std::abs(*std::max_element(t.x.begin(), t.x.end(), [](double a,
-                                                                                   double b) {
-      return std::abs(a) < std::abs(b);
-    }));
+    const double amplitude = std::abs(*std::max_element(
+        t.x.begin(), t.x.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }));
     CHECK(std::abs(amplitude - 1.0) < 1e-3);
   }
 }
 
-TEST_CASE_TEMPLATE("stiff spring advance: every sample is the closed form's and odeint's, far "
-                   "beyond the explicit stability limit", R, float, double) {
+TEST_CASE_TEMPLATE(
+    "stiff spring advance: every sample is the closed form's and odeint's, far "
+    "beyond the explicit stability limit",
+    R, float, double) {
   // w0 dt from 0.063 to 10.7 (explicit integration of the same spring is stable below 2),
   // undamped and damped (c / m = 0.5 per second).
   const double tolerance = std::is_same_v<R, float> ? 2e-4 : 1e-9;
@@ -113,9 +113,8 @@ TEST_CASE_TEMPLATE("stiff spring advance: every sample is the closed form's and 
       double worst_closed_form = 0;
       double worst_odeint = 0;
       for (long n = 0; n <= steps; ++n) {
-        const auto exact = forces::damped_oscillator(stiffness, friction / 2,
-                                                     Vector3<double>{1, 0, 0},
-                                                     Vector3<double>{}, double(n) * dt);
+        const auto exact = forces::damped_oscillator(
+            stiffness, friction / 2, Vector3<double>{1, 0, 0}, Vector3<double>{}, double(n) * dt);
         const auto i = std::size_t(n);
         worst_closed_form = std::max({worst_closed_form, std::abs(ours.x[i] - exact.position.x),
                                       std::abs(ours.v[i] - exact.velocity.x) / two_pi});
@@ -130,8 +129,10 @@ TEST_CASE_TEMPLATE("stiff spring advance: every sample is the closed form's and 
   }
 }
 
-TEST_CASE_TEMPLATE("stiff spring advance with gravity: odeint's trajectory at every step, and "
-                   "stable at any step", R, float, double) {
+TEST_CASE_TEMPLATE(
+    "stiff spring advance with gravity: odeint's trajectory at every step, and "
+    "stable at any step",
+    R, float, double) {
   // The spring and a constant gravity: x'' = -w0^2 x - c x' + g. Exact for constant a at
   // every step (w0 dt = 0.13 and 0.063 here: the closed form plus the push's response), so
   // every sample is odeint's within its tolerance (double) or the float rounding.
@@ -162,8 +163,10 @@ TEST_CASE_TEMPLATE("stiff spring advance with gravity: odeint's trajectory at ev
   CHECK(std::abs(big.x.back() - (-9.807 / stiffness)) < 1e-3);
 }
 
-TEST_CASE_TEMPLATE("stiff spring advance: like integrate for immovable bodies, zero and bad "
-                   "steps", R, float, double) {
+TEST_CASE_TEMPLATE(
+    "stiff spring advance: like integrate for immovable bodies, zero and bad "
+    "steps",
+    R, float, double) {
   const forces::StiffSpring<R> spring({}, R(100), R(1));
   Body<R> wall;
   wall.set_position({R(1), R(0), R(0)});
@@ -197,8 +200,10 @@ TEST_CASE_TEMPLATE("stiff spring advance: like integrate for immovable bodies, z
   CHECK(body.position() == Vector3<R>{R(1), R(0), R(0)});
 }
 
-TEST_CASE_TEMPLATE("stiff spring advance: a state beyond the range is reported, naming the "
-                   "part that left it, and nothing changes", R, float, double) {
+TEST_CASE_TEMPLATE(
+    "stiff spring advance: a state beyond the range is reported, naming the "
+    "part that left it, and nothing changes",
+    R, float, double) {
   const R max = std::numeric_limits<R>::max();
   // The message of the std::invalid_argument that advance throws ("" if none).
   const auto report = [](const forces::StiffSpring<R>& spring, Body<R>& body, R duration) {
@@ -231,8 +236,8 @@ TEST_CASE_TEMPLATE("stiff spring advance: a state beyond the range is reported, 
   CHECK(far.velocity() == Vector3<R>{max / R(2), R(0), R(0)});
 }
 
-TEST_CASE_TEMPLATE("position-only stiff spring: a period sqrt(2) too long at every step", R,
-                   float, double) {
+TEST_CASE_TEMPLATE("position-only stiff spring: a period sqrt(2) too long at every step", R, float,
+                   double) {
   // What the kept force form does wrong, pinned so the docs' statement stays true.
   for (const double dt : {1e-2, 1e-3}) {
     CAPTURE(dt);

@@ -75,16 +75,18 @@ double error_in_epsilons(R got, const Big& exact, const Big& scale) {
 
 }  // namespace
 
-TEST_CASE_TEMPLATE("push response: psi / t, Q / t^2 and Q2 / t^3 within 16 epsilons of 100 "
-                   "digits, for w0 t up to 2 and any damping", R, float, double) {
+TEST_CASE_TEMPLATE(
+    "push response: psi / t, Q / t^2 and Q2 / t^3 within 16 epsilons of 100 "
+    "digits, for w0 t up to 2 and any damping",
+    R, float, double) {
   // Every region of push_response: the series (w0 t, gamma t <= 2), the over-damped closed
   // forms (up to gamma t = 1000) and the differences (w0 t near 2, gamma t beyond 2), with
   // w0 = 0 and gamma = 0 among them; each at steps of 1/60, 1e-3 and 1 s.
   double worst = 0;
   for (const double t : {1.0 / 60, 1e-3, 1.0}) {
     for (const double a : {0.0, 1e-8, 1e-4, 0.01, 0.3, 0.7, 0.99, 1.0, 1.5, 1.99, 2.0}) {
-      for (const double b : {0.0, 1e-8, 1e-4, 0.01, 0.3, 0.99, 1.0, 1.01, 1.5, 1.97, 2.0, 2.03,
-                             3.0, 10.0, 100.0, 1000.0}) {
+      for (const double b : {0.0, 1e-8, 1e-4, 0.01, 0.3, 0.99, 1.0, 1.01, 1.5, 1.97, 2.0, 2.03, 3.0,
+                             10.0, 100.0, 1000.0}) {
         const R step = R(t);
         const R w0 = R(a / t);
         const R w0_squared = w0 * w0;
@@ -112,23 +114,23 @@ TEST_CASE_TEMPLATE("push response: psi / t, Q / t^2 and Q2 / t^3 within 16 epsil
   MESSAGE("worst push_response error (epsilons): " << worst);
 }
 
-TEST_CASE_TEMPLATE("position-only stiff spring: the force m ((x(t) - x0) / t - v0) / t within "
-                   "16 epsilons of its scale, a weak spring with damping included", R, float,
-                   double) {
+TEST_CASE_TEMPLATE(
+    "position-only stiff spring: the force m ((x(t) - x0) / t - v0) / t within "
+    "16 epsilons of its scale, a weak spring with damping included",
+    R, float, double) {
   // A weak spring with damping: w0 t far below the cube root of epsilon, gamma t not. The
   // difference quotient of the closed form lost the whole spring term there (float: k = 1e-4,
   // c = 1, m = 1 at 60 Hz from x0 = 1000 gave a force of 0 for -0.0497).
   struct Case {
     double k, c, mass, dt, x0, v0;
   };
-  const Case cases[] = {
-      {1e-4, 1, 1, 1.0 / 60, 10, 0},      {1e-4, 1, 1, 1.0 / 60, 100, 0},
-      {1e-4, 1, 1, 1.0 / 60, 1000, 0},    {1e-12, 1, 1, 1.0 / 60, 1, 0},
-      {1e-12, 1, 1, 1.0 / 60, 1000, 0},   {1e-4, 1, 1, 1.0 / 60, 1000, -3},
-      {1, 1000, 1, 0.5, 2, 1},            {50, 3, 2, 1.0 / 60, 0.5, 4},
-      {1e6, 0.01, 1, 1.0 / 60, 1e-3, 0},  {4, 4, 1, 0.1, 1, -1},
-      {0, 2, 1, 1.0 / 60, 5, 7},          {10, 600, 1, 1.0 / 60, -3, 0.25},
-      {1e-4, 0, 1, 1.0 / 60, 1000, 2},    {1, 1e-3, 3, 1.0 / 30, 100, 0}};
+  const Case cases[] = {{1e-4, 1, 1, 1.0 / 60, 10, 0},     {1e-4, 1, 1, 1.0 / 60, 100, 0},
+                        {1e-4, 1, 1, 1.0 / 60, 1000, 0},   {1e-12, 1, 1, 1.0 / 60, 1, 0},
+                        {1e-12, 1, 1, 1.0 / 60, 1000, 0},  {1e-4, 1, 1, 1.0 / 60, 1000, -3},
+                        {1, 1000, 1, 0.5, 2, 1},           {50, 3, 2, 1.0 / 60, 0.5, 4},
+                        {1e6, 0.01, 1, 1.0 / 60, 1e-3, 0}, {4, 4, 1, 0.1, 1, -1},
+                        {0, 2, 1, 1.0 / 60, 5, 7},         {10, 600, 1, 1.0 / 60, -3, 0.25},
+                        {1e-4, 0, 1, 1.0 / 60, 1000, 2},   {1, 1e-3, 3, 1.0 / 30, 100, 0}};
   for (const Case& e : cases) {
     const R inverse_mass = R(1) / R(e.mass);
     const R dt = R(e.dt);
@@ -148,9 +150,9 @@ TEST_CASE_TEMPLATE("position-only stiff spring: the force m ((x(t) - x0) / t - v
     const Big exact = m * (((x0 * r.phi + v0 * r.psi) - x0) / t - v0) / t;
     // The scale the force is accurate to: what it adds up (|k Q x0| and |(c Q + k Q2) v0|,
     // over t^2), each rounded in R.
-    const Big scale = (abs(Big(R(e.k)) * x0 * r.q) +
-                       abs((Big(R(e.c)) * r.q + Big(R(e.k)) * r.q2) * v0)) /
-                      (t * t);
+    const Big scale =
+        (abs(Big(R(e.k)) * x0 * r.q) + abs((Big(R(e.c)) * r.q + Big(R(e.k)) * r.q2) * v0)) /
+        (t * t);
     CAPTURE(e.k);
     CAPTURE(e.c);
     CAPTURE(e.mass);
@@ -164,8 +166,10 @@ TEST_CASE_TEMPLATE("position-only stiff spring: the force m ((x(t) - x0) / t - v
   }
 }
 
-TEST_CASE_TEMPLATE("stiff spring advance under gravity with strong damping: the exact trajectory, "
-                   "terminal velocity included", R, float, double) {
+TEST_CASE_TEMPLATE(
+    "stiff spring advance under gravity with strong damping: the exact trajectory, "
+    "terminal velocity included",
+    R, float, double) {
   // m x'' = -k x - c x' + m g: with c t / m large and w0 t small the velocity is the terminal
   // m g / c within a step or two. Exact for constant g at every step, so after n steps the
   // state is the closed form's at n t (to the rounding of n steps).

@@ -17,13 +17,14 @@ namespace damping = pointmass::damping;
 namespace position = pointmass::position;
 }  // namespace
 
-TEST_CASE_TEMPLATE("generators on a ParticleSystem match Particle, through apply and SoaBodies",
-                   R, float, double) {
+TEST_CASE_TEMPLATE("generators on a ParticleSystem match Particle, through apply and SoaBodies", R,
+                   float, double) {
   using System = pointmass::ParticleSystem<R, damping::None, position::SemiImplicit,
                                            pointmass::features::ForceAccumulator>;
   using Body = pointmass::Particle<R, damping::None, position::SemiImplicit>;
   static_assert(forces::Bodies<System>);
-  const std::array<Vector3<R>, 3> p{{{R(0), R(0.2), R(0)}, {R(1), R(-1), R(0)}, {R(2), R(3), R(1)}}};
+  const std::array<Vector3<R>, 3> p{
+      {{R(0), R(0.2), R(0)}, {R(1), R(-1), R(0)}, {R(2), R(3), R(1)}}};
   const std::array<Vector3<R>, 3> v{{{R(1), R(0), R(0)}, {R(0), R(-2), R(1)}, {R(0), R(0), R(0)}}};
   const std::array<R, 3> masses{R(2), R(0.5), R(3)};
   const forces::Drag<R> drag(R(0.4), R(0.1));
@@ -47,8 +48,12 @@ TEST_CASE_TEMPLATE("generators on a ParticleSystem match Particle, through apply
     forces::apply(drag, direct, dt);
     forces::apply(buoyancy, direct, dt);
     forces::apply(gravity, direct, dt);
-    forces::SoaBodies<R> soa{wrapped.position_x(), wrapped.position_y(), wrapped.position_z(),
-                             wrapped.velocity_x(), wrapped.velocity_y(), wrapped.velocity_z(),
+    forces::SoaBodies<R> soa{wrapped.position_x(),
+                             wrapped.position_y(),
+                             wrapped.position_z(),
+                             wrapped.velocity_x(),
+                             wrapped.velocity_y(),
+                             wrapped.velocity_z(),
                              wrapped.template column<pointmass::Column::inverse_mass>(),
                              wrapped.template column<pointmass::Column::force_x>(),
                              wrapped.template column<pointmass::Column::force_y>(),
@@ -56,15 +61,15 @@ TEST_CASE_TEMPLATE("generators on a ParticleSystem match Particle, through apply
     forces::apply(drag, soa, dt);
     forces::apply(buoyancy, soa, dt);
     // A temporary adapter: its forces land in the arrays it refers to.
-    forces::apply(gravity,
-                  forces::SoaBodies<R>{wrapped.position_x(), wrapped.position_y(),
-                                       wrapped.position_z(), wrapped.velocity_x(),
-                                       wrapped.velocity_y(), wrapped.velocity_z(),
-                                       wrapped.template column<pointmass::Column::inverse_mass>(),
-                                       wrapped.template column<pointmass::Column::force_x>(),
-                                       wrapped.template column<pointmass::Column::force_y>(),
-                                       wrapped.template column<pointmass::Column::force_z>()},
-                  dt);
+    forces::apply(
+        gravity,
+        forces::SoaBodies<R>{wrapped.position_x(), wrapped.position_y(), wrapped.position_z(),
+                             wrapped.velocity_x(), wrapped.velocity_y(), wrapped.velocity_z(),
+                             wrapped.template column<pointmass::Column::inverse_mass>(),
+                             wrapped.template column<pointmass::Column::force_x>(),
+                             wrapped.template column<pointmass::Column::force_y>(),
+                             wrapped.template column<pointmass::Column::force_z>()},
+        dt);
     for (Body& body : bodies) {
       forces::update_force(drag, body, dt);
       forces::update_force(buoyancy, body, dt);

@@ -90,8 +90,9 @@ System<S> system_at(Position position) {
 
 }  // namespace
 
-TEST_CASE_TEMPLATE("relative_to: the positions generators see are exact where the offset is a float", S,
-                   DoublePositions, CompensatedPositions) {
+TEST_CASE_TEMPLATE(
+    "relative_to: the positions generators see are exact where the offset is a float", S,
+    DoublePositions, CompensatedPositions) {
   // 2^-20 m beyond 1e6 m: a double, and for the pair hi = 1e6, lo = 2^-20; a float at 1e6 m
   // rounds it away.
   const double tiny = std::ldexp(1.0, -20);
@@ -130,8 +131,8 @@ TEST_CASE_TEMPLATE("relative_to: a spring 1e6 m out moves as the same spring nea
     forces::apply(spring, local, dt);
     forces::apply(spring, near, dt);
     // All-float 1e6 m out, with the anchor as a float there: what the wide storage saves.
-    forces::apply(forces::AnchoredSpring<float>(
-                      {float(anchor.x), float(anchor.y), float(anchor.z)}, 20.0f, 1.0f),
+    forces::apply(forces::AnchoredSpring<float>({float(anchor.x), float(anchor.y), float(anchor.z)},
+                                                20.0f, 1.0f),
                   far_float, dt);
     far.step(dt);
     near.step(dt);
@@ -152,15 +153,16 @@ TEST_CASE_TEMPLATE("relative_to: a spring 1e6 m out moves as the same spring nea
   // than the near system's rounding budget; rounding each position to float at 1e6 m (1/16 m
   // apart) would be far beyond it.
   const float budget = rounding_budget(largest, steps);
-  INFO("largest difference from the near system: " << from_near << " m; all-float's: "
-       << float_from_near << " m; budget " << budget << " m (largest coordinate " << largest
-       << " m)");
+  INFO("largest difference from the near system: "
+       << from_near << " m; all-float's: " << float_from_near << " m; budget " << budget
+       << " m (largest coordinate " << largest << " m)");
   CHECK(from_near <= budget);
   CHECK(float_from_near > 100 * budget);
 }
 
-TEST_CASE_TEMPLATE("relative_to: drag gives all-float's velocities bit for bit, the particle the system's bits", S,
-                   DoublePositions, CompensatedPositions) {
+TEST_CASE_TEMPLATE(
+    "relative_to: drag gives all-float's velocities bit for bit, the particle the system's bits", S,
+    DoublePositions, CompensatedPositions) {
   const forces::Drag<float> drag(0.3f, 0.05f);
   const forces::AnchoredSpring<float> spring({1, 0, 0}, 12.0f, 0.5f);
   System<S> wide = system_at<S>(far_from);
@@ -198,8 +200,9 @@ TEST_CASE_TEMPLATE("relative_to: drag gives all-float's velocities bit for bit, 
   CHECK(particle_as_system);
 }
 
-TEST_CASE_TEMPLATE("relative_to: springs between bodies 1e6 m out move as the same springs near the origin", S,
-                   DoublePositions, CompensatedPositions) {
+TEST_CASE_TEMPLATE(
+    "relative_to: springs between bodies 1e6 m out move as the same springs near the origin", S,
+    DoublePositions, CompensatedPositions) {
   // A chain of links in a system (apply_links), and a Spring each way between two particles.
   const auto s = starts();
   std::vector<forces::Link> links;
@@ -246,8 +249,8 @@ TEST_CASE_TEMPLATE("relative_to: springs between bodies 1e6 m out move as the sa
   }
   // As for the anchored spring: within the near bodies' own rounding budget.
   const float budget = rounding_budget(largest, steps);
-  INFO("largest difference from the near bodies: " << from_near << " m; budget " << budget
-       << " m (largest coordinate " << largest << " m)");
+  INFO("largest difference from the near bodies: "
+       << from_near << " m; budget " << budget << " m (largest coordinate " << largest << " m)");
   CHECK(from_near <= budget);
 }
 
@@ -300,8 +303,8 @@ struct Thruster {
 
 }  // namespace
 
-TEST_CASE_TEMPLATE("a generator with its own update_force member is called on a wide particle",
-                   S, DoublePositions, CompensatedPositions) {
+TEST_CASE_TEMPLATE("a generator with its own update_force member is called on a wide particle", S,
+                   DoublePositions, CompensatedPositions) {
   // A field generator needs relative_to (compile-fail forces_on_wide_particle*); a generator
   // with its own member is called, through update_force and through a registry.
   pm::Particle<S> ship;

@@ -55,10 +55,10 @@ std::uint64_t run(const char* name, int steps, Digest& overall) {
   const Vector3<R> gravity{R(0), R(-9.807), R(0)};
   std::vector<Particle<R, D, P>> bodies(count);
   // Per-particle damping where the policy has a damping value (None has none).
-  using System =
-      std::conditional_t<std::is_empty_v<typename D::template State<R>>,
-                         ParticleSystem<R, D, P, features::ForceAccumulator>,
-                         ParticleSystem<R, D, P, features::PerParticleDamping, features::ForceAccumulator>>;
+  using System = std::conditional_t<
+      std::is_empty_v<typename D::template State<R>>,
+      ParticleSystem<R, D, P, features::ForceAccumulator>,
+      ParticleSystem<R, D, P, features::PerParticleDamping, features::ForceAccumulator>>;
   System system(count);
   system.set_acceleration(gravity);
   for (int i = 0; i < count; ++i) {
@@ -100,8 +100,8 @@ std::uint64_t run(const char* name, int steps, Digest& overall) {
 template <class R>
 void run_all(const char* precision, int steps, Digest& overall) {
   char name[64];
-#define POINTMASS_RUN(D, P)                                                   \
-  std::snprintf(name, sizeof name, "%s %s %s", precision, #D, #P);            \
+#define POINTMASS_RUN(D, P)                                        \
+  std::snprintf(name, sizeof name, "%s %s %s", precision, #D, #P); \
   run<R, damping::D, position::P>(name, steps, overall)
   POINTMASS_RUN(None, Euler);
   POINTMASS_RUN(None, Kinematic);

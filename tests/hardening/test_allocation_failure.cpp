@@ -17,7 +17,7 @@
 
 namespace {
 bool fail_aligned_allocations = false;
-std::size_t allocations = 0;  // every operator new, plain and aligned
+std::size_t allocations = 0;          // every operator new, plain and aligned
 std::size_t aligned_allocations = 0;  // the aligned ones: the particle block's
 }  // namespace
 
@@ -42,7 +42,7 @@ void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::fre
 
 TEST_CASE("a growth that fails to allocate changes nothing, handles included") {
   using Named = pointmass::ParticleSystem<float, pointmass::damping::None,
-                                         pointmass::position::Euler, pointmass::features::Handles>;
+                                          pointmass::position::Euler, pointmass::features::Handles>;
   Named system;
   for (int i = 0; i < 16; ++i) system.spawn({float(i), 0.0f, 0.0f}, {});
   REQUIRE(system.capacity() == 16);  // full: the next spawn grows
@@ -147,12 +147,11 @@ TEST_CASE("a step allocates nothing: expiry, callbacks, handles and interpolatio
   namespace pm = pointmass;
   namespace f = pm::features;
   using Sparks = pm::ParticleSystem<float>;
-  using Featured = pm::ParticleSystem<float, pm::damping::Exact, pm::position::Exact,
-                                      f::PerParticleDamping, f::PerParticleAcceleration,
-                                      f::ForceAccumulator, f::Lifetime>;
-  using Game = pm::ParticleSystem<double, pm::damping::PerSecond, pm::position::Euler,
-                                  f::Lifetime, f::Interpolation, f::Handles,
-                                  f::Column<int, float>>;
+  using Featured =
+      pm::ParticleSystem<float, pm::damping::Exact, pm::position::Exact, f::PerParticleDamping,
+                         f::PerParticleAcceleration, f::ForceAccumulator, f::Lifetime>;
+  using Game = pm::ParticleSystem<double, pm::damping::PerSecond, pm::position::Euler, f::Lifetime,
+                                  f::Interpolation, f::Handles, f::Column<int, float>>;
   using Wide = pm::ParticleSystem<pm::Precision<float, double>, pm::damping::PerSecond,
                                   pm::position::Kinematic, f::Lifetime>;
   // Sizes on both sides of the alternating walk's lower bound (32 KiB of arrays).

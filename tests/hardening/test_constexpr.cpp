@@ -51,8 +51,8 @@ constexpr Vector3<R> gravity{R(0), R(-16.5), R(0)};  // -16 once the 0.5 up is a
 // p = p0 + v0 T + a T^2 / 2 and v = v0 + a T, exactly.
 template <class R>
 constexpr bool kinematic_is_exact() {
-  const auto p = shot<R, damping::None, position::Kinematic>(origin<R>, launch<R>, gravity<R>,
-                                                             R(1), R(1) / R(64), 64);
+  const auto p = shot<R, damping::None, position::Kinematic>(origin<R>, launch<R>, gravity<R>, R(1),
+                                                             R(1) / R(64), 64);
   return p.position() == Vector3<R>{R(8), R(4 + 16 - 8), R(-2)} &&
          p.velocity() == Vector3<R>{R(8), R(16 - 16), R(-2)};
 }
@@ -160,8 +160,8 @@ static_assert(velocity_after_one_step<double, damping::Exact, position::Exact>(0
 
 /// Damping values whose logarithms the compile-time and run-time test compares.
 template <class R>
-inline constexpr R log_inputs[] = {R(0.97), R(0.5), R(1e-3), R(0.999999), R(0.70710677),
-                                   std::numeric_limits<R>::denorm_min()};
+inline constexpr R log_inputs[] = {
+    R(0.97), R(0.5), R(1e-3), R(0.999999), R(0.70710677), std::numeric_limits<R>::denorm_min()};
 template <class R>
 inline constexpr auto compile_time_logs = [] {
   std::array<detail::SplitLog<R>, std::size(log_inputs<R>)> logs{};
@@ -188,8 +188,9 @@ void check_compile_time_equals_run_time() {
 
 }  // namespace
 
-TEST_CASE_TEMPLATE("a damping value's logarithm taken at compile time is the run-time one, bit for bit",
-                   R, float, double) {
+TEST_CASE_TEMPLATE(
+    "a damping value's logarithm taken at compile time is the run-time one, bit for bit", R, float,
+    double) {
   for (std::size_t i = 0; i < std::size(log_inputs<R>); ++i) {
     volatile R d = log_inputs<R>[i];  // keeps the run-time logarithm at run time
     const detail::SplitLog<R> at_run_time = detail::split_log(static_cast<R>(d));
@@ -200,8 +201,8 @@ TEST_CASE_TEMPLATE("a damping value's logarithm taken at compile time is the run
   }
 }
 
-TEST_CASE_TEMPLATE("a trajectory computed at compile time equals the run-time one, bit for bit",
-                   R, float, double) {
+TEST_CASE_TEMPLATE("a trajectory computed at compile time equals the run-time one, bit for bit", R,
+                   float, double) {
   check_compile_time_equals_run_time<R, damping::None, position::Euler>();
   check_compile_time_equals_run_time<R, damping::None, position::Kinematic>();
   check_compile_time_equals_run_time<R, damping::None, position::SemiImplicit>();

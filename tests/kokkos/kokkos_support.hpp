@@ -148,9 +148,9 @@ struct FeatureSets {
                             ParticleSystem<R, D, P, features::Lifetime>, All>;
   using type = std::conditional_t<
       damped,
-      decltype(std::tuple_cat(std::declval<Common>(),
-                              std::declval<std::tuple<
-                                  ParticleSystem<R, D, P, features::PerParticleDamping>>>())),
+      decltype(std::tuple_cat(
+          std::declval<Common>(),
+          std::declval<std::tuple<ParticleSystem<R, D, P, features::PerParticleDamping>>>())),
       Common>;
 };
 

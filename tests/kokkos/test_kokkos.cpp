@@ -3,8 +3,8 @@
 // values, expiry leaves the order swap-remove leaves, settings steer the step, views see the
 // arrays, a bad duration is reported and changes nothing, the step keeps the uniform damping
 // factors for its length; systems with wide positions step as the host steps them.
-#include "kokkos_support.hpp"
 #include "../support/counting_damping.hpp"
+#include "kokkos_support.hpp"
 
 #include <stdexcept>
 #include <type_traits>

@@ -6,14 +6,19 @@
 
 using namespace pointmass;
 
-TEST_CASE("AccelerateThenDamp damping, Euler position: Kokkos equals ParticleSystem::step, bit for bit") {
+TEST_CASE(
+    "AccelerateThenDamp damping, Euler position: Kokkos equals ParticleSystem::step, bit for bit") {
   test::check_pair<damping::AccelerateThenDamp, position::Euler>();
 }
 
-TEST_CASE("AccelerateThenDamp damping, Kinematic position: Kokkos equals ParticleSystem::step, bit for bit") {
+TEST_CASE(
+    "AccelerateThenDamp damping, Kinematic position: Kokkos equals ParticleSystem::step, bit for "
+    "bit") {
   test::check_pair<damping::AccelerateThenDamp, position::Kinematic>();
 }
 
-TEST_CASE("AccelerateThenDamp damping, SemiImplicit position: Kokkos equals ParticleSystem::step, bit for bit") {
+TEST_CASE(
+    "AccelerateThenDamp damping, SemiImplicit position: Kokkos equals ParticleSystem::step, bit "
+    "for bit") {
   test::check_pair<damping::AccelerateThenDamp, position::SemiImplicit>();
 }

@@ -6,14 +6,12 @@
 
 using namespace pointmass;
 
-TEST_CASE_TEMPLATE("1,000,000 particles: Kokkos equals ParticleSystem::step, bit for bit",
-                   System,
-                   ParticleSystem<float, damping::PerSecond, position::Kinematic,
-                                  features::Lifetime>,
-                   ParticleSystem<double, damping::Exact, position::Exact,
-                                  features::PerParticleDamping,
-                                  features::PerParticleAcceleration,
-                                  features::ForceAccumulator, features::Lifetime>) {
+TEST_CASE_TEMPLATE(
+    "1,000,000 particles: Kokkos equals ParticleSystem::step, bit for bit", System,
+    ParticleSystem<float, damping::PerSecond, position::Kinematic, features::Lifetime>,
+    ParticleSystem<double, damping::Exact, position::Exact, features::PerParticleDamping,
+                   features::PerParticleAcceleration, features::ForceAccumulator,
+                   features::Lifetime>) {
   using R = typename System::real;
   constexpr std::size_t count = 1'000'000;
   System host = test::make_scene<System>(count, 3);

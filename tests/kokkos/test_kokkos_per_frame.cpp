@@ -14,6 +14,7 @@ TEST_CASE("PerFrame damping, Kinematic position: Kokkos equals ParticleSystem::s
   test::check_pair<damping::PerFrame, position::Kinematic>();
 }
 
-TEST_CASE("PerFrame damping, SemiImplicit position: Kokkos equals ParticleSystem::step, bit for bit") {
+TEST_CASE(
+    "PerFrame damping, SemiImplicit position: Kokkos equals ParticleSystem::step, bit for bit") {
   test::check_pair<damping::PerFrame, position::SemiImplicit>();
 }

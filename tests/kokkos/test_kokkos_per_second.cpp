@@ -10,10 +10,12 @@ TEST_CASE("PerSecond damping, Euler position: Kokkos equals ParticleSystem::step
   test::check_pair<damping::PerSecond, position::Euler>();
 }
 
-TEST_CASE("PerSecond damping, Kinematic position: Kokkos equals ParticleSystem::step, bit for bit") {
+TEST_CASE(
+    "PerSecond damping, Kinematic position: Kokkos equals ParticleSystem::step, bit for bit") {
   test::check_pair<damping::PerSecond, position::Kinematic>();
 }
 
-TEST_CASE("PerSecond damping, SemiImplicit position: Kokkos equals ParticleSystem::step, bit for bit") {
+TEST_CASE(
+    "PerSecond damping, SemiImplicit position: Kokkos equals ParticleSystem::step, bit for bit") {
   test::check_pair<damping::PerSecond, position::SemiImplicit>();
 }

@@ -3,7 +3,8 @@
 // consumer's standard.
 #include <pointmass/pointmass.hpp>
 
-static_assert(__cplusplus > 202002L, "the consumer asked for C++23, but compiles as C++20 or older");
+static_assert(__cplusplus > 202002L,
+              "the consumer asked for C++23, but compiles as C++20 or older");
 
 int main() {
   pointmass::Particle<double> particle;

@@ -52,10 +52,10 @@ static_assert(std::is_same_v<pm::Particle<float>::position_type, float>);
 static_assert(std::is_same_v<pm::Particle<DoublePositions>::position_type, double>);
 static_assert(std::is_same_v<pm::Particle<CompensatedPositions>::position_type, double>);
 static_assert(std::is_same_v<pm::Particle<DoublePositions>::real, float>);
-static_assert(std::is_same_v<pm::units::Particle<DoublePositions>::position_type,
-                             pm::units::length<double>>);
-static_assert(std::is_same_v<pm::units::Particle<DoublePositions>::length_type,
-                             pm::units::length<float>>);
+static_assert(
+    std::is_same_v<pm::units::Particle<DoublePositions>::position_type, pm::units::length<double>>);
+static_assert(
+    std::is_same_v<pm::units::Particle<DoublePositions>::length_type, pm::units::length<float>>);
 // Bytes per particle: six floats today; three doubles and three floats, or six floats and
 // three error floats (36 both: the issue's 36/24).
 static_assert(pm::ParticleSystem<float>::storage_bytes_per_particle == 24);
@@ -64,8 +64,8 @@ static_assert(pm::ParticleSystem<CompensatedPositions>::storage_bytes_per_partic
 static_assert(pm::ParticleSystem<CompensatedPositions>::array_count == 9);
 static_assert(pm::ParticleSystem<CompensatedPositions>::stores<pm::Column::position_error_x>);
 static_assert(!pm::ParticleSystem<DoublePositions>::stores<pm::Column::position_error_x>);
-static_assert(std::is_same_v<pm::ParticleSystem<DoublePositions>::element_t<pm::Column::position_x>,
-                             double>);
+static_assert(
+    std::is_same_v<pm::ParticleSystem<DoublePositions>::element_t<pm::Column::position_x>, double>);
 // The particle with Compensated<float> stores 3 floats more than the float one; with double
 // positions 3 doubles instead of 3 floats.
 static_assert(sizeof(pm::Particle<CompensatedPositions, pm::damping::None>) ==
@@ -85,9 +85,7 @@ double largest(const Vector3<Wide>& v) {
   return static_cast<double>(std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z))));
 }
 /// The spacing of floats at |x|.
-double float_ulp(double x) {
-  return x < 1e-30 ? 1e-45 : std::ldexp(1.0, std::ilogb(x) - 23);
-}
+double float_ulp(double x) { return x < 1e-30 ? 1e-45 : std::ldexp(1.0, std::ilogb(x) - 23); }
 using pointmass::test::same_bits;
 
 struct Launch {
@@ -99,11 +97,11 @@ struct Launch {
 };
 
 struct Result {
-  double drift = 0;            ///< |variant - exact| at the end, m
-  double float_drift = 0;      ///< |all-float - exact| at the end, m
-  double from_float = 0;       ///< largest |variant - all-float| over the run, m
-  double float_rounding = 0;   ///< what all-float's position roundings can add up to, m
-  double own_rounding = 0;     ///< what the variant's own roundings can add up to, m
+  double drift = 0;                 ///< |variant - exact| at the end, m
+  double float_drift = 0;           ///< |all-float - exact| at the end, m
+  double from_float = 0;            ///< largest |variant - all-float| over the run, m
+  double float_rounding = 0;        ///< what all-float's position roundings can add up to, m
+  double own_rounding = 0;          ///< what the variant's own roundings can add up to, m
   bool velocities_as_float = true;  ///< the variant's velocity is all-float's, bit for bit
   bool systems_as_particle = true;  ///< both systems' particles are the Particle's, bit for bit
 };
@@ -180,10 +178,9 @@ Result fly(const Launch& launch) {
     const Vector3<Wide> p_variant = widen(variant.position());
     // All-float rounds the position at each addition that involves p0 (two for the forms
     // with an a t^2 term): half an ulp each, per component.
-    const int additions = std::is_same_v<P, pm::position::Kinematic> ||
-                                  std::is_same_v<P, pm::position::Exact>
-                              ? 2
-                              : 1;
+    const int additions =
+        std::is_same_v<P, pm::position::Kinematic> || std::is_same_v<P, pm::position::Exact> ? 2
+                                                                                             : 1;
     result.float_rounding += std::sqrt(3.0) * additions * float_ulp(largest(p_plain)) / 2;
     // The variant's own: double rounds p0 + d (half a double ulp); the pair rounds d + lo
     // (half a float ulp of |d| + |lo|, |lo| at most half a float ulp of p).
@@ -193,7 +190,8 @@ Result fly(const Launch& launch) {
                            : float_ulp(largest(widen(d)) + float_ulp(p_size)) / 2;
     result.own_rounding += std::sqrt(3.0) * own;
     result.from_float = std::max(result.from_float, distance(p_variant, p_plain));
-    result.velocities_as_float = result.velocities_as_float && same_bits(variant.velocity(), plain.velocity()) &&
+    result.velocities_as_float = result.velocities_as_float &&
+                                 same_bits(variant.velocity(), plain.velocity()) &&
                                  same_bits(variant.velocity(), mover.velocity());
     if (n % 4096 == 0 || n + 1 == launch.steps) {
       for (std::size_t k : {std::size_t{0}, copies - 1}) {
@@ -216,9 +214,7 @@ Launch free_flight(double from) { return {{from, 0, 0}, {10, 0, 5}, {0, 0, 0}, 1
 Launch artillery(double from) {
   return {{from, 0, from / 4}, {300, 400, 0}, {0, -9.81f, 0}, 0.9f, 1'000'000};
 }
-Launch sparks(double from) {
-  return {{0, from, 0}, {3, 8, -2}, {0, -9.81f, 0}, 0.995f, 1'000'000};
-}
+Launch sparks(double from) { return {{0, from, 0}, {3, 8, -2}, {0, -9.81f, 0}, 0.995f, 1'000'000}; }
 
 /// At 1e6 m both variants hold the issue's target, 1 mm. At 1e8 m double positions still do;
 /// a float pair resolves 2^-48 of the position (0.4 um at 1e8 m), and its roundings of
@@ -274,8 +270,8 @@ TEST_CASE_TEMPLATE("near the origin: never worse than all-float beyond its posit
   namespace p = pm::position;
   const auto check_near = []<class D, class P>(const Launch& launch) {
     const Result r = fly<S, D, P>(launch);
-    MESSAGE("from all-float ", r.from_float, " m (its rounding ", r.float_rounding,
-            " m); drift ", r.drift, " m against all-float's ", r.float_drift, " m");
+    MESSAGE("from all-float ", r.from_float, " m (its rounding ", r.float_rounding, " m); drift ",
+            r.drift, " m against all-float's ", r.float_drift, " m");
     CHECK(r.velocities_as_float);
     CHECK(r.systems_as_particle);
     // The variant and all-float differ by all-float's rounding of the positions (and the
@@ -345,8 +341,10 @@ TEST_CASE("Fast2Sum: exact where hi's exponent is at least y's, within an ulp of
 // moves nothing leaves a position of -0 at -0, as all-float's p0 + v0 t does (from p0 = +0 the
 // displacement of a velocity of -0 would come out +0, and -0 + +0 is +0). A compensated -0 is
 // hi = -0 and lo = -0 (with lo = +0, hi + lo would read +0).
-TEST_CASE_TEMPLATE("wide positions: a step of zero displacement keeps the sign of zero, as "
-                   "all-float's", S, DoublePositions, CompensatedPositions) {
+TEST_CASE_TEMPLATE(
+    "wide positions: a step of zero displacement keeps the sign of zero, as "
+    "all-float's",
+    S, DoublePositions, CompensatedPositions) {
   const Vector3<float> minus_zero{-0.0f, -0.0f, -0.0f};
   pm::Particle<float> plain;
   plain.set_position(minus_zero);
@@ -418,7 +416,8 @@ TEST_CASE("render-relative: double positions, exact wherever the true offset is 
   }
 }
 
-TEST_CASE("render-relative: compensated positions, from hi + lo, exact wherever the offset is a float") {
+TEST_CASE(
+    "render-relative: compensated positions, from hi + lo, exact wherever the offset is a float") {
   // Particles that have flown (so lo carries real error terms), cameras at hi + lo - t for
   // random float offsets t (kept where that is a double).
   std::mt19937_64 random(15);
@@ -468,8 +467,9 @@ TEST_CASE("render-relative: compensated positions, from hi + lo, exact wherever 
   CHECK(with_error_term > 0);
 }
 
-TEST_CASE("render-relative: rounded once, also where the offset rounded to double is a float "
-          "midpoint") {
+TEST_CASE(
+    "render-relative: rounded once, also where the offset rounded to double is a float "
+    "midpoint") {
   // 1 + 2^-24 (a float midpoint) from a camera at -2^-80: the offset 1 + 2^-24 + 2^-80 lies
   // above the midpoint and rounds to 1 + 2^-23; rounded to double first it is the midpoint,
   // which then rounds to even, 1.
@@ -547,7 +547,7 @@ TEST_CASE("round_via_odd: round_once's float, branch-free, for every kind of dou
         break;
       }
       case 1: z = double(static_cast<float>(z)); break;  // a float
-      case 2: z = std::nextafter(z, 0.0); break;           // an even or odd last bit
+      case 2: z = std::nextafter(z, 0.0); break;         // an even or odd last bit
       default: break;
     }
     // r: zero, or below half an ulp of z either way (what a TwoSum's error can be).
@@ -734,7 +734,8 @@ TEST_CASE("render-relative: an origin read from the buffer being written is the 
   CHECK(same_bits(buffer[2], Vector3<float>{6.0f, 7.0f, 8.0f}));
 }
 
-TEST_CASE("spawn(particle) copies a compensated position's error term: the system goes on bit for bit") {
+TEST_CASE(
+    "spawn(particle) copies a compensated position's error term: the system goes on bit for bit") {
   pm::Particle<CompensatedPositions, pm::damping::PerSecond, pm::position::Kinematic> particle;
   particle.set_position({3.0e6, -1.0e6, 5.0e5});
   particle.set_velocity({123.0f, 45.0f, -67.0f});
@@ -742,7 +743,8 @@ TEST_CASE("spawn(particle) copies a compensated position's error term: the syste
   particle.set_damping(0.8f);
   for (int k = 0; k < 1000; ++k) particle.integrate(1.0f / 60.0f);
   REQUIRE(particle.stored_position_error().x != 0.0f);  // lo carries something by now
-  pm::ParticleSystem<CompensatedPositions, pm::damping::PerSecond, pm::position::Kinematic> system(1);
+  pm::ParticleSystem<CompensatedPositions, pm::damping::PerSecond, pm::position::Kinematic> system(
+      1);
   system.set_acceleration(pm::gravity<float>());
   system.set_damping(0.8f);
   system.spawn(particle);
@@ -802,9 +804,10 @@ TEST_CASE("render-relative into a type wider than the stored position: rounded o
   }
 }
 
-TEST_CASE("features::Handles: the handle slot column is read-only (the table indexes itself with it)") {
-  using System = pm::ParticleSystem<float, pm::damping::PerSecond, pm::position::Euler,
-                                    pm::features::Handles>;
+TEST_CASE(
+    "features::Handles: the handle slot column is read-only (the table indexes itself with it)") {
+  using System =
+      pm::ParticleSystem<float, pm::damping::PerSecond, pm::position::Euler, pm::features::Handles>;
   System system(1);
   system.spawn({}, {});
   using Span = decltype(system.column<pm::Column::handle_slot>());
@@ -816,8 +819,9 @@ TEST_CASE("features::Handles: the handle slot column is read-only (the table ind
 
 struct OwnerTag {};
 
-TEST_CASE_TEMPLATE("game features with wide positions: previous positions, interpolation, user columns, handles", S,
-                   DoublePositions, CompensatedPositions) {
+TEST_CASE_TEMPLATE(
+    "game features with wide positions: previous positions, interpolation, user columns, handles",
+    S, DoublePositions, CompensatedPositions) {
   using System = pm::ParticleSystem<S, pm::damping::PerSecond, pm::position::Euler,
                                     pm::features::Interpolation, pm::features::Handles,
                                     pm::features::Column<OwnerTag, int>>;
@@ -875,7 +879,8 @@ TEST_CASE_TEMPLATE("game features with wide positions: previous positions, inter
 
 // --- setting positions -------------------------------------------------------------------------
 
-TEST_CASE("set_position on compensated positions: split into hi + lo, beyond float's range refused") {
+TEST_CASE(
+    "set_position on compensated positions: split into hi + lo, beyond float's range refused") {
   pm::Particle<CompensatedPositions> particle;
   const double wanted = 16777216.0 + 0.375;  // 2^24 + 3/8: a float holds 2^24, lo 3/8
   particle.set_position({wanted, -wanted, 1.0});
@@ -898,11 +903,12 @@ TEST_CASE("set_position on compensated positions: split into hi + lo, beyond flo
   CHECK(system.position(i).x == wanted);
 }
 
-TEST_CASE("set_position on compensated positions: every position() the pair gives is taken back, "
-          "up to the midpoint above the largest float") {
+TEST_CASE(
+    "set_position on compensated positions: every position() the pair gives is taken back, "
+    "up to the midpoint above the largest float") {
   const double largest = static_cast<double>(std::numeric_limits<float>::max());  // 2^128 - 2^104
   const double midpoint = largest + 0x1p103;  // half its ulp above
-  const double inside = midpoint - 0x1p76;  // lo = 2^103 - 2^76 rounds to 2^103
+  const double inside = midpoint - 0x1p76;    // lo = 2^103 - 2^76 rounds to 2^103
   const double beyond = std::nextafter(midpoint, 1e300);
   for (const double sign : {1.0, -1.0}) {
     CAPTURE(sign);
@@ -974,8 +980,9 @@ TEST_CASE("set_position on compensated positions: every position() the pair give
   }
 }
 
-TEST_CASE("set_position on compensated positions: taken exactly when within the midpoint above "
-          "the largest float, and position() set back gives the same value") {
+TEST_CASE(
+    "set_position on compensated positions: taken exactly when within the midpoint above "
+    "the largest float, and position() set back gives the same value") {
   const double largest = static_cast<double>(std::numeric_limits<float>::max());
   const double midpoint = largest + 0x1p103;
   std::mt19937_64 random(33);
@@ -991,9 +998,8 @@ TEST_CASE("set_position on compensated positions: taken exactly when within the 
     // 2^68 around the midpoint, where the largest float and the refusals meet: below it, a
     // sixteenth of them have v - largest round to 2^103 as a float, so position() is the
     // midpoint itself.
-    const double x = (n % 2 == 0)
-                         ? std::ldexp(fraction(random), exponent(random))
-                         : midpoint + static_cast<double>(near_edge(random)) * 0x1p68;
+    const double x = (n % 2 == 0) ? std::ldexp(fraction(random), exponent(random))
+                                  : midpoint + static_cast<double>(near_edge(random)) * 0x1p68;
     const double v = (n % 4 < 2) ? x : -x;
     CAPTURE(v);
     pm::Particle<CompensatedPositions> particle;

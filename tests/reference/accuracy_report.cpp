@@ -56,8 +56,9 @@ std::string float_drift() {
 std::string far_flight_table() {
   const FarFlight flight = fly_far_from_origin(1'000'000);
   const auto metres = [](double x) {
-    return x >= 1.0 ? format("%.0f m", x) : x >= 1e-3 ? format("%.1f mm", x * 1e3)
-                                                      : format("%.2g m", x);
+    return x >= 1.0    ? format("%.0f m", x)
+           : x >= 1e-3 ? format("%.1f mm", x * 1e3)
+                       : format("%.2g m", x);
   };
   std::string table =
       "| particle | from the exact sum of the float steps | from the double particle |\n"
@@ -118,8 +119,8 @@ this scene, and the error is rounding only. The float column is the same run in 
   print("## Scene 1: free flight (no damping, g = 9.807 m/s^2, 5 s)\n\n");
   print(error_table(free_flight()));
   for (const Scene& s : ballistic_scenes()) {
-    print("\n## Scene 2: " + s.name +
-          format(" (mass %g kg", s.mass) + format(", damping %g per second, 5 s)\n\n", s.damping));
+    print("\n## Scene 2: " + s.name + format(" (mass %g kg", s.mass) +
+          format(", damping %g per second, 5 s)\n\n", s.damping));
     print(error_table(s));
   }
   print("\n## Scene 3: mass on a spring (period 1 s, one period), undamped\n\n");
@@ -153,17 +154,22 @@ enough step makes them stable.
 
 )");
   print(stability_table());
-  print("\n## Float far from the origin\n\nFree flight at (10, 0, 5) m/s from (1e6, 0, 0) m, 10^6 steps of 1/60 s (4.6 hours): float ends " +
-        float_drift() +
-        " from double (bound: half an ulp of 1.17e6 m per step, 62500 m; `tests/stress`). At "
-        "1e6 m a float resolves only 1/16 m. Keep float arithmetic and store only the position "
-        "wider (`Precision<float, double>` or `Precision<float, Compensated<float>>`, "
-        "[large-worlds.md](large-worlds.md)), use double, or keep positions near the origin. The "
-        "same flight in each precision, against the exact sum of the float steps (what the "
-        "position storage loses) and against the double particle (which also counts what the "
-        "float inputs themselves, 1/60 and each v t rounded to float, move the flight by):\n\n" + far_flight_table());
-  print("\n## The exact pair in one step\n\n`damping::Exact` with `position::Exact`, the four shots in a single 5 s step: largest relative position error " +
-        single_step_error() + " against the closed form.\n");
+  print(
+      "\n## Float far from the origin\n\nFree flight at (10, 0, 5) m/s from (1e6, 0, 0) m, 10^6 "
+      "steps of 1/60 s (4.6 hours): float ends " +
+      float_drift() +
+      " from double (bound: half an ulp of 1.17e6 m per step, 62500 m; `tests/stress`). At "
+      "1e6 m a float resolves only 1/16 m. Keep float arithmetic and store only the position "
+      "wider (`Precision<float, double>` or `Precision<float, Compensated<float>>`, "
+      "[large-worlds.md](large-worlds.md)), use double, or keep positions near the origin. The "
+      "same flight in each precision, against the exact sum of the float steps (what the "
+      "position storage loses) and against the double particle (which also counts what the "
+      "float inputs themselves, 1/60 and each v t rounded to float, move the flight by):\n\n" +
+      far_flight_table());
+  print(
+      "\n## The exact pair in one step\n\n`damping::Exact` with `position::Exact`, the four shots "
+      "in a single 5 s step: largest relative position error " +
+      single_step_error() + " against the closed form.\n");
   print(R"(
 ## How the test bounds are derived
 
@@ -174,17 +180,24 @@ own convergence tests do, C is calibrated at the coarsest step h0 = 1/30 s and e
 step is held to
 )");
   const auto num = [](double x) { return format("%g", x); };
-  print("\n    e(h) <= " + num(convergence_margin) + " e(h0) (h / h0)^p   (`accuracy::convergence_bound`).\n\n");
-  print("The margin " + num(convergence_margin) +
-        " lets a pre-asymptotic error lose that factor of its constant over the three\n"
-        "halvings, but a method one order lower (a formula that no longer follows the model to\n"
-        "order p) has e(h0/4) = 4 e(h0) (1/4)^p, twice the bound, and fails. Each halving's observed\n"
-        "order is held within " + num(order_tolerance) + " of p, except on a spring while omega^2 h T / 2 > " +
-        num(pre_asymptotic_growth) + "\n(the 1 s spring at 1/30 and 1/60 s, where the error still shrinks faster than h^p):\n"
-        "there it may exceed p by up to " + num(pre_asymptotic_excess) +
-        ", and the finest halving is always held within " + num(order_tolerance) + "\n"
-        "(`accuracy::order_interval`). Where the step is the model's exact flow, the error is held\n"
-        "to a few ulps a step.\n");
+  print("\n    e(h) <= " + num(convergence_margin) +
+        " e(h0) (h / h0)^p   (`accuracy::convergence_bound`).\n\n");
+  print(
+      "The margin " + num(convergence_margin) +
+      " lets a pre-asymptotic error lose that factor of its constant over the three\n"
+      "halvings, but a method one order lower (a formula that no longer follows the model to\n"
+      "order p) has e(h0/4) = 4 e(h0) (1/4)^p, twice the bound, and fails. Each halving's "
+      "observed\n"
+      "order is held within " +
+      num(order_tolerance) + " of p, except on a spring while omega^2 h T / 2 > " +
+      num(pre_asymptotic_growth) +
+      "\n(the 1 s spring at 1/30 and 1/60 s, where the error still shrinks faster than h^p):\n"
+      "there it may exceed p by up to " +
+      num(pre_asymptotic_excess) + ", and the finest halving is always held within " +
+      num(order_tolerance) +
+      "\n"
+      "(`accuracy::order_interval`). Where the step is the model's exact flow, the error is held\n"
+      "to a few ulps a step.\n");
   print(R"(
 In float the error is held to the double run's error plus a derived rounding term
 (`accuracy::float_rounding_bound`): each step rounds the position update by at most

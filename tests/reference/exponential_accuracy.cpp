@@ -92,9 +92,8 @@ Result<R> measure(double d_min, double t_max, long samples, std::uint64_t seed) 
 
 template <class R>
 void row(const char* real, const char* domain, const Result<R>& r) {
-  std::printf("| %s | %s | %lld (d = %.9g, t = %.9g) | %lld (d = %.9g, t = %.9g) |\n", real,
-              domain, r.power.ulps, r.power.d, r.power.t, r.minus_one.ulps, r.minus_one.d,
-              r.minus_one.t);
+  std::printf("| %s | %s | %lld (d = %.9g, t = %.9g) | %lld (d = %.9g, t = %.9g) |\n", real, domain,
+              r.power.ulps, r.power.d, r.power.t, r.minus_one.ulps, r.minus_one.d, r.minus_one.t);
 }
 
 }  // namespace
@@ -114,8 +113,7 @@ int main(int argc, char** argv) {
       measure<double>(std::numeric_limits<double>::denorm_min(), 10.0, samples, 4));
   const long long stated = 4;
   const bool within = float_stated.power.ulps <= stated && float_stated.minus_one.ulps <= stated &&
-                      double_stated.power.ulps <= stated &&
-                      double_stated.minus_one.ulps <= stated;
+                      double_stated.power.ulps <= stated && double_stated.minus_one.ulps <= stated;
   std::printf("\n%s: at most %lld ulp for d in [1e-3, 1], t in [0, 1] s\n",
               within ? "within the stated bound" : "EXCEEDS the stated bound", stated);
   return within ? 0 : 1;

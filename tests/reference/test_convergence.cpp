@@ -60,7 +60,8 @@ void check_scene(const Scene& s) {
   const auto& frame_times = scenes::standard_frame_times;
   for_each_combination([&]<class D, class P>() {
     const std::string name = combination_name<D, P>();
-    INFO("scene: ", s.name, ", combination: ", name, ", real: ", std::string(sizeof(R) == 4 ? "float" : "double"));
+    INFO("scene: ", s.name, ", combination: ", name,
+         ", real: ", std::string(sizeof(R) == 4 ? "float" : "double"));
     const Errors e = errors_of<D, P>(s);
     const bool exact = is_exact_for<D, P>(s);
     constexpr int order = order_v<D, P>;
@@ -128,7 +129,8 @@ TEST_CASE("the error bounds are not vacuous on any scene: a run twice as wrong f
   }
 }
 
-TEST_CASE("per-frame damping calibrated per second is the per-second model, fixed per frame it is not") {
+TEST_CASE(
+    "per-frame damping calibrated per second is the per-second model, fixed per frame it is not") {
   // d per frame kept fixed: the drag rate ln(d)/h is 8 times stronger at 240 fps than at
   // 30 fps, so the 5 s positions differ by far more than either method's error.
   Scene s = ballistic_scenes()[0];
@@ -142,7 +144,9 @@ TEST_CASE("per-frame damping calibrated per second is the per-second model, fixe
   const double difference = magnitude(end_position(1.0 / 30) - end_position(1.0 / 240));
   // Per-frame damping set per second (d^h): its error against the per-second model at 1/30 s.
   const double h = 1.0 / 30;
-  const double calibrated = global_error(simulate<double, damping::PerFrame, position::Euler>(s, h, steps_for(s, h)),
-                                         reference_trajectory<damping::PerFrame>(s, h, steps_for(s, h))).position;
+  const double calibrated =
+      global_error(simulate<double, damping::PerFrame, position::Euler>(s, h, steps_for(s, h)),
+                   reference_trajectory<damping::PerFrame>(s, h, steps_for(s, h)))
+          .position;
   CHECK(difference > 10 * calibrated);
 }

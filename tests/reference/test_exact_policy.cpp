@@ -8,8 +8,8 @@
 #include <doctest/doctest.h>
 
 #include "accuracy.hpp"
-#include "tolerance.hpp"
 #include "reference_solution.hpp"
+#include "tolerance.hpp"
 
 using namespace pointmass;
 using namespace pointmass::accuracy;
@@ -37,7 +37,8 @@ Run<R> run_exact(Scene s, double h) {
   run.samples.push_back({widen(particle.position()), widen(particle.velocity())});
   for (long n = 0; n < steps_for(s, h); ++n) {
     particle.integrate(frame);
-    run.all_finite = run.all_finite && is_finite(particle.position()) && is_finite(particle.velocity());
+    run.all_finite =
+        run.all_finite && is_finite(particle.position()) && is_finite(particle.velocity());
     run.samples.push_back({widen(particle.position()), widen(particle.velocity())});
   }
   return run;
@@ -60,8 +61,10 @@ Scene as_stored(Scene s) {
 template <class R>
 double tolerance(long steps) {
   if constexpr (std::is_same_v<R, double>) return 1e-12;
-  const double rounding = 8.0 * static_cast<double>(std::numeric_limits<R>::epsilon()) * static_cast<double>(steps);
-  if constexpr (std::is_same_v<R, long double>) return rounding + 2 * std::numeric_limits<double>::epsilon();
+  const double rounding =
+      8.0 * static_cast<double>(std::numeric_limits<R>::epsilon()) * static_cast<double>(steps);
+  if constexpr (std::is_same_v<R, long double>)
+    return rounding + 2 * std::numeric_limits<double>::epsilon();
   return rounding;
 }
 
@@ -73,7 +76,10 @@ TEST_CASE_TEMPLATE("the exact pair matches the closed form at every frame time a
     for (const double d : damping_values) {
       shot.damping = d;
       const Scene s = as_stored<R>(shot);
-      const double k = s.damping == 1.0 ? 0.0 : (s.damping > 0 ? std::log(s.damping) : -std::numeric_limits<double>::infinity());
+      const double k =
+          s.damping == 1.0
+              ? 0.0
+              : (s.damping > 0 ? std::log(s.damping) : -std::numeric_limits<double>::infinity());
       for (const double h : exact_frame_times) {
         INFO(shot.name, ", damping ", d, ", frame time ", h);
         const Run<R> run = run_exact<R>(s, h);
@@ -82,14 +88,15 @@ TEST_CASE_TEMPLATE("the exact pair matches the closed form at every frame time a
         const double tol = tolerance<R>(steps);
         for (long n = 0; n <= steps; ++n) {
           const double t = static_cast<double>(n) * static_cast<double>(static_cast<R>(h));
-          const auto exact = reference::analytic_ballistic(s.start_position, s.start_velocity,
-                                                           s.gravity, k, t);
+          const auto exact =
+              reference::analytic_ballistic(s.start_position, s.start_velocity, s.gravity, k, t);
           const auto& x = run.samples[static_cast<std::size_t>(n)];
           INFO("step ", n, ": position ", x.position, ", exact ", exact.position);
-          const double scale = std::max({1.0, magnitude(exact.position), magnitude(s.start_position)});
+          const double scale =
+              std::max({1.0, magnitude(exact.position), magnitude(s.start_position)});
           CHECK(magnitude(x.position - exact.position) <= tol * scale);
-          const double speed = std::max({1.0, magnitude(exact.velocity), magnitude(s.start_velocity),
-                                         magnitude(s.gravity) * t});
+          const double speed = std::max({1.0, magnitude(exact.velocity),
+                                         magnitude(s.start_velocity), magnitude(s.gravity) * t});
           CHECK(magnitude(x.velocity - exact.velocity) <= tol * speed);
         }
       }
@@ -146,6 +153,7 @@ TEST_CASE_TEMPLATE("no damping (d = 1) is the kinematic form exactly", R, float,
     kinematic.integrate(R(1) / R(60));
   }
   const R eps = std::numeric_limits<R>::epsilon();
-  CHECK(magnitude(exact.position() - kinematic.position()) <= 300 * 8 * eps * magnitude(kinematic.position()));
+  CHECK(magnitude(exact.position() - kinematic.position()) <=
+        300 * 8 * eps * magnitude(kinematic.position()));
   CHECK(exact.velocity() == kinematic.velocity());
 }

@@ -7,8 +7,8 @@
 #include <doctest/doctest.h>
 
 #include "accuracy.hpp"
-#include "tolerance.hpp"
 #include "reference_solution.hpp"
+#include "tolerance.hpp"
 
 using namespace pointmass;
 using namespace pointmass::accuracy;
@@ -19,16 +19,19 @@ TEST_CASE("Odeint agrees with the closed form on every ballistic shot, damped an
       const reference::Model model{s.gravity, 0, 0, rate};
       const double h = 1.0 / 30;
       const long steps = steps_for(s, h);
-      const auto numeric = reference::odeint_trajectory(model, s.start_position, s.start_velocity, h, steps);
+      const auto numeric =
+          reference::odeint_trajectory(model, s.start_position, s.start_velocity, h, steps);
       REQUIRE(numeric.size() == static_cast<std::size_t>(steps) + 1);
       for (long n = 0; n <= steps; ++n) {
-        const auto exact = reference::analytic_ballistic(s.start_position, s.start_velocity,
-                                                         s.gravity, rate, static_cast<double>(n) * h);
+        const auto exact = reference::analytic_ballistic(
+            s.start_position, s.start_velocity, s.gravity, rate, static_cast<double>(n) * h);
         const auto& y = numeric[static_cast<std::size_t>(n)];
         INFO(s.name, " rate ", rate, " step ", n);
         // dopri5's local tolerance 1e-12, accumulated over the run: 1e-11 of the scale.
-        CHECK(magnitude(y.position - exact.position) <= 1e-11 * std::max(1.0, magnitude(exact.position)));
-        CHECK(magnitude(y.velocity - exact.velocity) <= 1e-11 * std::max(1.0, magnitude(exact.velocity)));
+        CHECK(magnitude(y.position - exact.position) <=
+              1e-11 * std::max(1.0, magnitude(exact.position)));
+        CHECK(magnitude(y.velocity - exact.velocity) <=
+              1e-11 * std::max(1.0, magnitude(exact.velocity)));
       }
     }
   }

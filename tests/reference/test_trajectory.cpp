@@ -46,10 +46,10 @@ double coordinate(const Vector3<double>& v, Axis axis) {
 std::optional<double> reference_time(const Scene& s, double rate, Axis axis, double value,
                                      double horizon) {
   const auto gap = [&](double t) {
-    return coordinate(reference::analytic_ballistic(s.start_position, s.start_velocity, s.gravity,
-                                                    rate, t)
-                          .position,
-                      axis) -
+    return coordinate(
+               reference::analytic_ballistic(s.start_position, s.start_velocity, s.gravity, rate, t)
+                   .position,
+               axis) -
            value;
   };
   const double start = gap(0);
@@ -82,9 +82,9 @@ struct Target {
 const std::vector<Target> targets{
     {"pistol", Axis::y, 0.0, true},     {"pistol", Axis::z, 50.0, true},
     {"artillery", Axis::y, 0.0, true},  {"artillery", Axis::y, 20.0, true},
-    {"artillery", Axis::y, 23.5, true}, {"artillery", Axis::y, 30.0, false}, {"fireball", Axis::y, 0.0, false},
-    {"fireball", Axis::y, 5.0, true},   {"laser", Axis::z, 200.0, true},
-    {"laser", Axis::y, 0.0, false},
+    {"artillery", Axis::y, 23.5, true}, {"artillery", Axis::y, 30.0, false},
+    {"fireball", Axis::y, 0.0, false},  {"fireball", Axis::y, 5.0, true},
+    {"laser", Axis::z, 200.0, true},    {"laser", Axis::y, 0.0, false},
 };
 
 Scene shot_named(const char* name) {
@@ -105,8 +105,10 @@ TEST_CASE("state_at matches Odeint at 1e-12 relative over the four shots, and is
       // Odeint at a local tolerance of 1e-14, so that its own error stays below the 1e-12.
       const auto ref = reference::odeint_trajectory(model_of<damping::Exact>(s), s.start_position,
                                                     s.start_velocity, time, 1, 1e-14)[1];
-      CHECK(magnitude(state.position - ref.position) <= 1e-12 * std::max(1.0, magnitude(ref.position)));
-      CHECK(magnitude(state.velocity - ref.velocity) <= 1e-12 * std::max(1.0, magnitude(ref.velocity)));
+      CHECK(magnitude(state.position - ref.position) <=
+            1e-12 * std::max(1.0, magnitude(ref.position)));
+      CHECK(magnitude(state.velocity - ref.velocity) <=
+            1e-12 * std::max(1.0, magnitude(ref.velocity)));
       CHECK(position_at(particle, time) == state.position);
       CHECK(velocity_at(particle, time) == state.velocity);
       Exact stepped = particle;
@@ -170,21 +172,22 @@ TEST_CASE("queries stay exact as d -> 1 and d -> 0") {
     INFO("damping ", d);
     for (const double time : {1e-9, 0.5, 3.0, 40.0}) {
       const auto state = state_at(particle, time);
-      const auto ref = reference::analytic_ballistic(artillery.start_position,
-                                                     artillery.start_velocity, artillery.gravity,
-                                                     rate, time);
-      CHECK(magnitude(state.position - ref.position) <= 1e-12 * std::max(1.0, magnitude(ref.position)));
-      CHECK(magnitude(state.velocity - ref.velocity) <= 1e-12 * std::max(1.0, magnitude(ref.velocity)));
+      const auto ref = reference::analytic_ballistic(
+          artillery.start_position, artillery.start_velocity, artillery.gravity, rate, time);
+      CHECK(magnitude(state.position - ref.position) <=
+            1e-12 * std::max(1.0, magnitude(ref.position)));
+      CHECK(magnitude(state.velocity - ref.velocity) <=
+            1e-12 * std::max(1.0, magnitude(ref.velocity)));
     }
     // The apex, by a dense scan of the closed form: a height just below it is reached (on
     // the way up: the turning point must be where the velocity passes 0, at every drag).
     double apex = artillery.start_position.y;
     for (int n = 0; n <= 200000; ++n) {
       const double t = 10.0 * n / 200000;
-      apex = std::max(apex, reference::analytic_ballistic(artillery.start_position,
-                                                          artillery.start_velocity,
-                                                          artillery.gravity, rate, t)
-                                .position.y);
+      apex = std::max(
+          apex, reference::analytic_ballistic(artillery.start_position, artillery.start_velocity,
+                                              artillery.gravity, rate, t)
+                    .position.y);
     }
     const double near_apex = apex - 0.05 * (apex - artillery.start_position.y);
     // The ground, 10 m (reached on the way up when the drag allows), and just below the apex.

@@ -27,7 +27,8 @@ bool finite(const reference::Sample& x) { return is_finite(x.position) && is_fin
 template <Real R>
 void check_finite_and_exact(const Scene& s, double h) {
   for_each_combination([&]<class D, class P>() {
-    INFO(s.name, ", ", combination_name<D, P>(), ", frame time ", h, ", ", sizeof(R) == 4 ? "float" : "double");
+    INFO(s.name, ", ", combination_name<D, P>(), ", frame time ", h, ", ",
+         sizeof(R) == 4 ? "float" : "double");
     const long steps = steps_for(s, h);
     std::vector<reference::Sample> run;
     {
@@ -47,9 +48,9 @@ void check_finite_and_exact(const Scene& s, double h) {
     stored.gravity = widen(cast<R>(s.gravity));
     stored.damping = static_cast<double>(static_cast<R>(s.damping));
     const double hr = static_cast<double>(static_cast<R>(h));
-    const auto exact = reference::analytic_ballistic(stored.start_position, stored.start_velocity,
-                                                     stored.gravity, damping_rate<D>(stored),
-                                                     hr * static_cast<double>(steps));
+    const auto exact =
+        reference::analytic_ballistic(stored.start_position, stored.start_velocity, stored.gravity,
+                                      damping_rate<D>(stored), hr * static_cast<double>(steps));
     const double scale = std::max(magnitude(exact.position), magnitude(s.start_position));
     CHECK(magnitude(run.back().position - exact.position) <= tol * scale);
   });
@@ -98,7 +99,8 @@ TEST_CASE_TEMPLATE("damping 1 is no damping, bit for bit, damping 0 keeps only t
       }
       const Vector3<R> push = cast<R>(s.gravity) * (R(1) / R(60));
       // v1 = v0 d + a t (PerFrame, PerSecond): a t; (v0 + a t) d^t: 0; exact: a t phi1(-inf) = 0.
-      const bool keeps_push = std::is_same_v<D, damping::PerFrame> || std::is_same_v<D, damping::PerSecond>;
+      const bool keeps_push =
+          std::is_same_v<D, damping::PerFrame> || std::is_same_v<D, damping::PerSecond>;
       for (const auto& x : stopped) CHECK(finite(x));
       CHECK(cast<R>(stopped.back().velocity) == (keeps_push ? push : Vector3<R>{}));
     }
@@ -106,7 +108,8 @@ TEST_CASE_TEMPLATE("damping 1 is no damping, bit for bit, damping 0 keeps only t
   for_each_combination(compare_with_none);
 }
 
-TEST_CASE_TEMPLATE("tiny and huge masses under a force, infinite mass never moves", R, float, double) {
+TEST_CASE_TEMPLATE("tiny and huge masses under a force, infinite mass never moves", R, float,
+                   double) {
   for (const R mass : {R(1e-6), R(1e9)}) {
     Particle<R, damping::None, position::Kinematic> p;  // exact for a constant force
     p.set_mass(mass);
@@ -121,8 +124,8 @@ TEST_CASE_TEMPLATE("tiny and huge masses under a force, infinite mass never move
     // After 1 s: v = F/m, p = F/(2m), each within the rounding of 60 steps (4 eps each).
     const R time = R(60) * (R(1) / R(60));
     CHECK(pointmass::test::close(p.velocity(), force * (time / mass), R(240), R(0)));
-    CHECK(pointmass::test::close(p.position(), force * (time * time / (R(2) * mass)), R(240),
-                                 R(0)));
+    CHECK(
+        pointmass::test::close(p.position(), force * (time * time / (R(2) * mass)), R(240), R(0)));
   }
   Particle<R> wall;
   wall.set_position({R(1), R(2), R(3)});
@@ -163,7 +166,8 @@ TEST_CASE("float far from the origin (1e6 m): drift after 10^6 steps, measured a
         static_cast<double>(steps) * std::ldexp(1.0, std::ilogb(largest) - 52));
 }
 
-TEST_CASE("springs at their stability limits: semi-implicit bounded below omega h = 2, explicit never") {
+TEST_CASE(
+    "springs at their stability limits: semi-implicit bounded below omega h = 2, explicit never") {
   const Scene s = spring(false, 1);
   const double omega = s.angular_frequency();
   const auto energy_ratios = [&]<class P>(double r, long steps) {
@@ -219,8 +223,9 @@ TEST_CASE("springs at their stability limits: semi-implicit bounded below omega 
   }
 }
 
-TEST_CASE_TEMPLATE("subnormal velocities after long damping: no NaN, monotone, down to the last ulps",
-                   R, float, double) {
+TEST_CASE_TEMPLATE(
+    "subnormal velocities after long damping: no NaN, monotone, down to the last ulps", R, float,
+    double) {
   for_each_combination([&]<class D, class P>() {
     if constexpr (!std::is_same_v<D, damping::None>) {
       INFO(combination_name<D, P>());
@@ -248,14 +253,15 @@ TEST_CASE_TEMPLATE("subnormal velocities after long damping: no NaN, monotone, d
       // v d^h rounds back to v once the step removes less than half an ulp: at m ulps with
       // m (1 - d^h) < 1/2. So the speed stops at most 1/(2 (1 - d^h)) + 1 ulps above zero.
       const double kept = std::pow(0.5, static_cast<double>(h));
-      const double last = (0.5 / (1 - kept) + 1) * static_cast<double>(std::numeric_limits<R>::denorm_min());
+      const double last =
+          (0.5 / (1 - kept) + 1) * static_cast<double>(std::numeric_limits<R>::denorm_min());
       CHECK(static_cast<double>(p.velocity().x) <= last);
     }
   });
 }
 
-TEST_CASE_TEMPLATE("a long run: 10^6 steps of the undamped spring, semi-implicit, energy bounded", R,
-                   float, double) {
+TEST_CASE_TEMPLATE("a long run: 10^6 steps of the undamped spring, semi-implicit, energy bounded",
+                   R, float, double) {
   // Scene 4. At omega h = 2 pi / 240 the conserved Q bounds the energy within
   // [(1 - r/2)/(1 + r/2), (1 + r/2)/(1 - r/2)] (5% wide). Rounding changes Q by at most 8 u
   // relative a step (u the unit roundoff; four operations on p and v, squared in the energy);
@@ -271,7 +277,8 @@ TEST_CASE_TEMPLATE("a long run: 10^6 steps of the undamped spring, semi-implicit
     TrapFloatingPointExceptions trap;
     for (long n = 0; n < 1'000'000; ++n) {
       step(particle, s, static_cast<R>(h));
-      const double ratio = energy(s, {widen(particle.position()), widen(particle.velocity())}) / start;
+      const double ratio =
+          energy(s, {widen(particle.position()), widen(particle.velocity())}) / start;
       low = std::min(low, ratio);
       high = std::max(high, ratio);
     }
@@ -283,8 +290,9 @@ TEST_CASE_TEMPLATE("a long run: 10^6 steps of the undamped spring, semi-implicit
   CHECK(low >= (1 - r / 2) / (1 + r / 2) - slack);
 }
 
-TEST_CASE_TEMPLATE("a long run: 10^6 steps of the seed's defaults settle at their terminal velocity", R,
-                   float, double) {
+TEST_CASE_TEMPLATE(
+    "a long run: 10^6 steps of the seed's defaults settle at their terminal velocity", R, float,
+    double) {
   // The fireball rises against per-second damping 0.9: v* = a h / (1 - d^h), the fixed point
   // of v d^h + a h.
   Scene s = ballistic_scenes()[2];

@@ -16,10 +16,10 @@
 #include <vector>
 
 #include <pointmass/damping.hpp>
+#include <pointmass/extras/scenes.hpp>
 #include <pointmass/particle.hpp>
 #include <pointmass/position.hpp>
 #include <pointmass/precision.hpp>
-#include <pointmass/extras/scenes.hpp>
 #include <pointmass/vector3.hpp>
 
 #include "reference_solution.hpp"
@@ -92,7 +92,8 @@ inline Scene free_flight() {
 
 /// Scene 3: the mass on a spring (scenes::SpringScene: period 1 s), undamped or damped
 /// (friction 0.5 N s/m through add_force and per-second damping 0.5), over `duration`.
-inline Scene spring(bool damped, double duration, double stiffness = scenes::SpringScene<double>{}.stiffness) {
+inline Scene spring(bool damped, double duration,
+                    double stiffness = scenes::SpringScene<double>{}.stiffness) {
   const scenes::SpringScene<double> spring_scene{};
   Scene s;
   s.name = damped ? "damped spring" : "spring";
@@ -134,7 +135,9 @@ template <class S>
 std::string precision_name() {
   using R = real_of_t<S>;
   using Position = position_precision_of_t<S>;
-  const std::string real = std::is_same_v<R, float> ? "float" : std::is_same_v<R, double> ? "double" : "long-double";
+  const std::string real = std::is_same_v<R, float>    ? "float"
+                           : std::is_same_v<R, double> ? "double"
+                                                       : "long-double";
   if constexpr (std::is_same_v<R, Position>) return real;
   else if constexpr (detail::is_compensated_v<Position>) return real + "/compensated-pos";
   else return real + (std::is_same_v<Position, double> ? "/double-pos" : "/long-double-pos");
@@ -219,7 +222,8 @@ Vector3<double> widen(const Vector3<R>& v) {
 /// factor of two of the offset (then the difference is a double), and for a compensated
 /// position hi + lo computed as (hi - offset) + lo, so lo is not rounded away at the offset.
 template <class S, class D, class P>
-Vector3<double> relative_position(const Particle<S, D, P>& particle, const Vector3<double>& offset) {
+Vector3<double> relative_position(const Particle<S, D, P>& particle,
+                                  const Vector3<double>& offset) {
   if constexpr (requires { particle.stored_position_error(); }) {
     return (widen(particle.stored_position()) - offset) + widen(particle.stored_position_error());
   } else {
@@ -253,8 +257,9 @@ template <class S, class D, class P>
 void step(Particle<S, D, P>& particle, const Scene& s, real_of_t<S> h) {
   using R = real_of_t<S>;
   if (s.has_spring()) {
-    const Vector3<R> force = cast<R>(relative_position(particle, s.offset)) * static_cast<R>(-s.stiffness) +
-                             particle.velocity() * static_cast<R>(-s.friction);
+    const Vector3<R> force =
+        cast<R>(relative_position(particle, s.offset)) * static_cast<R>(-s.stiffness) +
+        particle.velocity() * static_cast<R>(-s.friction);
     particle.add_force(force);
   }
   particle.integrate(h);
@@ -327,7 +332,8 @@ inline FarFlight fly_far_from_origin(long steps) {
 template <class D>
 std::vector<reference::Sample> reference_trajectory(const Scene& s, double h, long steps) {
   const auto model = model_of<D>(s);
-  if (s.has_spring()) return reference::odeint_trajectory(model, s.start_position, s.start_velocity, h, steps);
+  if (s.has_spring())
+    return reference::odeint_trajectory(model, s.start_position, s.start_velocity, h, steps);
   std::vector<reference::Sample> samples;
   samples.reserve(static_cast<std::size_t>(steps) + 1);
   for (long n = 0; n <= steps; ++n) {
@@ -408,7 +414,8 @@ struct OrderInterval {
 inline OrderInterval order_interval(const Scene& s, double h, int order, bool finest) {
   const double growth = s.stiffness / s.mass * h * s.duration / 2;
   const double excess = s.has_spring() && growth > pre_asymptotic_growth && !finest
-                            ? pre_asymptotic_excess : order_tolerance;
+                            ? pre_asymptotic_excess
+                            : order_tolerance;
   return {order - order_tolerance, order + excess};
 }
 
@@ -454,8 +461,8 @@ template <class D, class P>
 double float_rounding_bound(const Scene& s, const Extent& x, double h) {
   const double u = static_cast<double>(std::numeric_limits<float>::epsilon()) / 2;
   const double omega = s.angular_frequency();
-  const double acceleration = magnitude(s.gravity) + omega * omega * x.position +
-                              s.friction / s.mass * x.velocity;
+  const double acceleration =
+      magnitude(s.gravity) + omega * omega * x.position + s.friction / s.mass * x.velocity;
   const double round_p = 4 * u * (x.position + x.velocity * h);
   const double round_v = 8 * u * (x.velocity + acceleration * h);
   const StepMatrix m = step_matrix<D, P>(s, h);
@@ -505,7 +512,8 @@ bool bounded_at(Scene s, double r, long steps) {
     step(particle, s, h);
     const double e = energy(s, {particle.position(), particle.velocity()});
     if (!(e < 1e12 * start)) return false;
-    (n < steps / 2 ? first_half : second_half) = std::max(n < steps / 2 ? first_half : second_half, e);
+    (n < steps / 2 ? first_half : second_half) =
+        std::max(n < steps / 2 ? first_half : second_half, e);
   }
   return second_half <= 2 * first_half;
 }

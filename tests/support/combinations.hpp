@@ -21,9 +21,9 @@ struct Combination {
 };
 
 template <class R, class D>
-using WithEveryPosition = std::tuple<Combination<R, D, position::Euler>,
-                                     Combination<R, D, position::Kinematic>,
-                                     Combination<R, D, position::SemiImplicit>>;
+using WithEveryPosition =
+    std::tuple<Combination<R, D, position::Euler>, Combination<R, D, position::Kinematic>,
+               Combination<R, D, position::SemiImplicit>>;
 
 template <class... Tuples>
 using Concat = decltype(std::tuple_cat(std::declval<Tuples>()...));
@@ -32,8 +32,7 @@ template <class R>
 using CombinationsOf =
     Concat<WithEveryPosition<R, damping::None>, WithEveryPosition<R, damping::PerFrame>,
            WithEveryPosition<R, damping::PerSecond>,
-           WithEveryPosition<R, damping::AccelerateThenDamp>,
-           WithEveryPosition<R, damping::Exact>,
+           WithEveryPosition<R, damping::AccelerateThenDamp>, WithEveryPosition<R, damping::Exact>,
            std::tuple<Combination<R, damping::Exact, position::Exact>,
                       Combination<R, damping::None, position::Exact>>>;
 

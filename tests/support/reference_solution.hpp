@@ -38,10 +38,10 @@ using State = std::array<double, 6>;  ///< p (0..2), v (3..5)
 
 /// The continuous model's parameters (all per unit mass, SI units).
 struct Model {
-  Vector3<double> gravity{};   ///< constant acceleration g, m/s^2
-  double stiffness = 0;        ///< K/m, 1/s^2
-  double friction = 0;         ///< c/m, 1/s
-  double damping_rate = 0;     ///< k = ln d, 1/s (<= 0)
+  Vector3<double> gravity{};  ///< constant acceleration g, m/s^2
+  double stiffness = 0;       ///< K/m, 1/s^2
+  double friction = 0;        ///< c/m, 1/s
+  double damping_rate = 0;    ///< k = ln d, 1/s (<= 0)
 
   void operator()(const State& y, State& dydt, double /*t*/) const {
     const double g[3] = {gravity.x, gravity.y, gravity.z};
@@ -61,9 +61,7 @@ struct Sample {
 inline State to_state(const Vector3<double>& p, const Vector3<double>& v) {
   return {p.x, p.y, p.z, v.x, v.y, v.z};
 }
-inline Sample to_sample(const State& y) {
-  return {{y[0], y[1], y[2]}, {y[3], y[4], y[5]}};
-}
+inline Sample to_sample(const State& y) { return {{y[0], y[1], y[2]}, {y[3], y[4], y[5]}}; }
 
 /// The model's solution at t = n h, n = 0 .. steps (steps + 1 samples), by dopri5 with dense
 /// output at absolute and relative `tolerance` (1e-12 unless a test needs it tighter).
@@ -76,8 +74,9 @@ inline std::vector<Sample> odeint_trajectory(const Model& model, const Vector3<d
   State y = to_state(p0, v0);
   auto stepper =
       odeint::make_dense_output(tolerance, tolerance, odeint::runge_kutta_dopri5<State>());
-  odeint::integrate_n_steps(stepper, model, y, 0.0, h, static_cast<std::size_t>(steps),
-                            [&](const State& state, double) { samples.push_back(to_sample(state)); });
+  odeint::integrate_n_steps(
+      stepper, model, y, 0.0, h, static_cast<std::size_t>(steps),
+      [&](const State& state, double) { samples.push_back(to_sample(state)); });
   if (samples.size() != static_cast<std::size_t>(steps) + 1) {
     throw std::logic_error("odeint_trajectory: " + std::to_string(samples.size()) +
                            " samples for " + std::to_string(steps) + " steps");

@@ -40,10 +40,10 @@ struct StringMaker<pointmass::Vector3<T>> {
 }  // namespace doctest
 
 /// Checks a == b within `ulps` epsilons (relative, floor 1), printing both on failure.
-#define POINTMASS_CHECK_CLOSE(a, b, ulps)                      \
-  do {                                                         \
-    const auto pm_lhs_ = (a);                                  \
-    const auto pm_rhs_ = (b);                                  \
-    INFO("lhs = ", pm_lhs_, ", rhs = ", pm_rhs_);              \
-    CHECK(::pointmass::test::close(pm_lhs_, pm_rhs_, ulps));   \
+#define POINTMASS_CHECK_CLOSE(a, b, ulps)                    \
+  do {                                                       \
+    const auto pm_lhs_ = (a);                                \
+    const auto pm_rhs_ = (b);                                \
+    INFO("lhs = ", pm_lhs_, ", rhs = ", pm_rhs_);            \
+    CHECK(::pointmass::test::close(pm_lhs_, pm_rhs_, ulps)); \
   } while (false)

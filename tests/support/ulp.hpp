@@ -17,8 +17,8 @@ namespace pointmass::test {
 /// the value (and need not match: a sanitized build leaves it as it finds it).
 template <class R>
 bool same_bits(R a, R b) {
-  constexpr bool x87 = std::is_same_v<R, long double> &&
-                       std::numeric_limits<long double>::digits == 64;
+  constexpr bool x87 =
+      std::is_same_v<R, long double> && std::numeric_limits<long double>::digits == 64;
   return std::memcmp(&a, &b, x87 ? 10 : sizeof(R)) == 0;
 }
 template <class R>

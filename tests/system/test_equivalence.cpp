@@ -223,20 +223,21 @@ TEST_CASE_TEMPLATE_DEFINE(
 TEST_CASE_TEMPLATE_APPLY(per_particle_equivalence, EveryPairFloatAndDouble);
 
 TEST_CASE_TEMPLATE_DEFINE(
-    "chunks of movable particles step without the select: system == Particles, bit for bit",
-    C, movable_chunks_equivalence) {
+    "chunks of movable particles step without the select: system == Particles, bit for bit", C,
+    movable_chunks_equivalence) {
   // 3,000 particles: the walk alternates (forwards: chunks of 1,024 particles, of which the
   // first holds immovable particles 17 and 40, past its first block, and the next two none;
   // backwards: chunks of 256), and particle 2,995 is immovable in the remainder after the
   // last whole block. The chunks with no immovable particle take the loop without the select.
-  check_per_particle_equivalence<C>(3000, 6, [](std::size_t i) {
-    return i == 17 || i == 40 || i == 2995;
-  });
+  check_per_particle_equivalence<C>(3000, 6,
+                                    [](std::size_t i) { return i == 17 || i == 40 || i == 2995; });
 }
 TEST_CASE_TEMPLATE_APPLY(movable_chunks_equivalence, EveryPairFloatAndDouble);
 
-TEST_CASE_TEMPLATE("an inverse mass of NaN or -0 written through its column keeps the particle "
-                   "in place among movable ones", R, float, double) {
+TEST_CASE_TEMPLATE(
+    "an inverse mass of NaN or -0 written through its column keeps the particle "
+    "in place among movable ones",
+    R, float, double) {
   // The column is the user's to write; a step moves only particles whose inverse mass is
   // > 0, whatever chunk they are in. 2,048 particles: two whole chunks.
   using System = ParticleSystem<R, damping::PerSecond, position::Euler,

@@ -25,19 +25,18 @@
 namespace {
 
 using namespace pointmass;
+using pointmass::test::CountingPerSecond;
 using pointmass::test::random_vector;
 using pointmass::test::same_bits;
-using pointmass::test::CountingPerSecond;
 
 template <class System>
 std::size_t stored_arrays(const System& system) {
   const auto& a = system.arrays();
-  const void* pointers[] = {a.position_x,     a.position_y,     a.position_z,
-                            a.velocity_x,     a.velocity_y,     a.velocity_z,
-                            a.acceleration_x, a.acceleration_y, a.acceleration_z,
-                            a.inverse_mass,   a.force_x,        a.force_y,
-                            a.force_z,        a.damping,        a.age,
-                            a.lifetime};
+  const void* pointers[] = {
+      a.position_x, a.position_y,     a.position_z,     a.velocity_x,     a.velocity_y,
+      a.velocity_z, a.acceleration_x, a.acceleration_y, a.acceleration_z, a.inverse_mass,
+      a.force_x,    a.force_y,        a.force_z,        a.damping,        a.age,
+      a.lifetime};
   return static_cast<std::size_t>(
       std::count_if(std::begin(pointers), std::end(pointers), [](const void* p) { return p; }));
 }
@@ -47,18 +46,17 @@ std::size_t stored_arrays(const System& system) {
 TEST_CASE_TEMPLATE("each feature stores its arrays, and nothing else", R, float, double) {
   using Bare = ParticleSystem<R, damping::None, position::Euler>;
   using Sparks = ParticleSystem<R>;  // uniform per-second damping and gravity
-  using Damped = ParticleSystem<R, damping::PerSecond, position::Euler,
-                                features::PerParticleDamping>;
+  using Damped =
+      ParticleSystem<R, damping::PerSecond, position::Euler, features::PerParticleDamping>;
   using ExactDamped =
       ParticleSystem<R, damping::Exact, position::Exact, features::PerParticleDamping>;
-  using Accelerated = ParticleSystem<R, damping::PerFrame, position::Euler,
-                                     features::PerParticleAcceleration>;
+  using Accelerated =
+      ParticleSystem<R, damping::PerFrame, position::Euler, features::PerParticleAcceleration>;
   using Forced = ParticleSystem<R, damping::None, position::Euler, features::ForceAccumulator>;
   using Aging = ParticleSystem<R, damping::None, position::Euler, features::Lifetime>;
-  using Everything =
-      ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
-                     features::ForceAccumulator, features::PerParticleAcceleration,
-                     features::PerParticleDamping>;
+  using Everything = ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
+                                    features::ForceAccumulator, features::PerParticleAcceleration,
+                                    features::PerParticleDamping>;
 
   static_assert(Bare::storage_bytes_per_particle == 6 * sizeof(R));
   static_assert(Sparks::storage_bytes_per_particle == 6 * sizeof(R));
@@ -72,20 +70,21 @@ TEST_CASE_TEMPLATE("each feature stores its arrays, and nothing else", R, float,
   static_assert(Everything::storage_bytes_per_particle == 19 * sizeof(R));
 
   // The accessors of what is not stored do not exist.
-  static_assert(!requires(Bare& s) { s.template column<Column::acceleration_x>(); });
-  static_assert(requires(Accelerated& s) { s.template column<Column::acceleration_x>(); });
-  static_assert(!requires(Bare& s) { s.set_damping(R(1)); });  // damping::None has none
-  static_assert(!requires(Sparks& s) { s.set_damping(std::size_t{0}, R(1)); });
-  static_assert(requires(Sparks& s) { s.set_damping(R(1)); });
-  static_assert(requires(Damped& s) { s.template column<Column::damping>(); });
-  static_assert(!Sparks::template stores<Column::damping> && Damped::template stores<Column::damping>);
-  static_assert(!requires(Damped& s) { s.set_damping(R(1)); });  // no uniform value either
-  static_assert(!requires(Sparks& s) { s.add_force(std::size_t{0}, Vector3<R>{}); });
-  static_assert(requires(Forced& s) { s.add_force(std::size_t{0}, Vector3<R>{}); });
-  static_assert(!requires(Sparks& s) { s.template column<Column::age>(); });
-  static_assert(requires(Aging& s) { s.template column<Column::age>(); });
-  static_assert(requires(Accelerated& s) { s.set_acceleration(std::size_t{0}, Vector3<R>{}); });
-  static_assert(!requires(Accelerated& s) { s.set_acceleration(Vector3<R>{}); });
+  static_assert(!requires(Bare & s) { s.template column<Column::acceleration_x>(); });
+  static_assert(requires(Accelerated & s) { s.template column<Column::acceleration_x>(); });
+  static_assert(!requires(Bare & s) { s.set_damping(R(1)); });  // damping::None has none
+  static_assert(!requires(Sparks & s) { s.set_damping(std::size_t{0}, R(1)); });
+  static_assert(requires(Sparks & s) { s.set_damping(R(1)); });
+  static_assert(requires(Damped & s) { s.template column<Column::damping>(); });
+  static_assert(!Sparks::template stores<Column::damping> &&
+                Damped::template stores<Column::damping>);
+  static_assert(!requires(Damped & s) { s.set_damping(R(1)); });  // no uniform value either
+  static_assert(!requires(Sparks & s) { s.add_force(std::size_t{0}, Vector3<R>{}); });
+  static_assert(requires(Forced & s) { s.add_force(std::size_t{0}, Vector3<R>{}); });
+  static_assert(!requires(Sparks & s) { s.template column<Column::age>(); });
+  static_assert(requires(Aging & s) { s.template column<Column::age>(); });
+  static_assert(requires(Accelerated & s) { s.set_acceleration(std::size_t{0}, Vector3<R>{}); });
+  static_assert(!requires(Accelerated & s) { s.set_acceleration(Vector3<R>{}); });
 
   // The same at run time: the block holds exactly those arrays.
   CHECK(stored_arrays(Bare(10)) == 6);
@@ -99,9 +98,10 @@ TEST_CASE_TEMPLATE("each feature stores its arrays, and nothing else", R, float,
   CHECK(Forced(10).arrays().acceleration_x == nullptr);
 }
 
-TEST_CASE_TEMPLATE("uniform damping computes its factors once per step length, per-particle "
-                   "once each a step",
-                   R, float, double) {
+TEST_CASE_TEMPLATE(
+    "uniform damping computes its factors once per step length, per-particle "
+    "once each a step",
+    R, float, double) {
   using Uniform = ParticleSystem<R, CountingPerSecond>;
   Uniform uniform(100);
   ParticleSystem<R, CountingPerSecond, position::Euler, features::PerParticleDamping> each(100);
@@ -153,8 +153,8 @@ TEST_CASE_TEMPLATE("arrays share one block, 64-byte aligned, staggered within th
       const auto& b = everything.arrays();
       std::vector<std::uintptr_t> starts;
       if (arrays == 6) {
-        for (const R* p : {a.position_x, a.position_y, a.position_z, a.velocity_x, a.velocity_y,
-                           a.velocity_z}) {
+        for (const R* p :
+             {a.position_x, a.position_y, a.position_z, a.velocity_x, a.velocity_y, a.velocity_z}) {
           starts.push_back(reinterpret_cast<std::uintptr_t>(p));
         }
       } else {
@@ -195,8 +195,8 @@ TEST_CASE_TEMPLATE("spawn, kill by index and by predicate: swap-remove", R, floa
   system.kill(4);  // the last itself
   CHECK(system.size() == 4);
   // Remaining x: 0, 5, 2, 3. Remove the even ones.
-  const std::size_t removed =
-      system.kill_if([&](std::size_t i) { return static_cast<int>(system.position(i).x) % 2 == 0; });
+  const std::size_t removed = system.kill_if(
+      [&](std::size_t i) { return static_cast<int>(system.position(i).x) % 2 == 0; });
   CHECK(removed == 2);
   REQUIRE(system.size() == 2);
   std::multiset<R> left{system.position(0).x, system.position(1).x};
@@ -242,8 +242,8 @@ TEST_CASE_TEMPLATE("lifetime: particles age by each step and expire when age rea
   CHECK(system.position(0).x == R(2));
 }
 
-TEST_CASE_TEMPLATE("lifetime in a large system: exactly the expired particles go, every step",
-                   R, float, double) {
+TEST_CASE_TEMPLATE("lifetime in a large system: exactly the expired particles go, every step", R,
+                   float, double) {
   // 1,000 particles (many blocks of 16) with lifetimes (n + 1/2) / 64 s in a shuffled order,
   // stepped by 1/64 s (exact in binary): after step k, exactly those with n >= k are alive,
   // each of them once, whatever the order the swap-removes left them in.
@@ -270,9 +270,10 @@ TEST_CASE_TEMPLATE("lifetime in a large system: exactly the expired particles go
   }
 }
 
-TEST_CASE_TEMPLATE("lifetime: the step on which the age equals the lifetime exactly removes the "
-                   "particle, and a lifetime one ulp longer lives one step more",
-                   R, float, double) {
+TEST_CASE_TEMPLATE(
+    "lifetime: the step on which the age equals the lifetime exactly removes the "
+    "particle, and a lifetime one ulp longer lives one step more",
+    R, float, double) {
   // 40 particles: 32 in whole vector blocks (the block scan), 8 in the rest (one at a time).
   // Steps of 1/64 s add up exactly, so after step 3 the age is 3/64 s to the last bit. Even
   // indices live exactly 3/64 s, odd ones the next R above it; x names the particle.
@@ -312,11 +313,12 @@ TEST_CASE_TEMPLATE("lifetime: the step on which the age equals the lifetime exac
 
 // (That a step allocates nothing at all is counted by tests/hardening/test_allocation_failure.cpp,
 // which replaces operator new.)
-TEST_CASE_TEMPLATE("capacity is reserved up front, a step keeps the block, growth keeps data",
-                   R, float, double) {
+TEST_CASE_TEMPLATE("capacity is reserved up front, a step keeps the block, growth keeps data", R,
+                   float, double) {
   ParticleSystem<R> system(64);
   std::mt19937 engine(1);
-  for (int i = 0; i < 64; ++i) system.spawn(random_vector(engine, R(10)), random_vector(engine, R(10)));
+  for (int i = 0; i < 64; ++i)
+    system.spawn(random_vector(engine, R(10)), random_vector(engine, R(10)));
   const R* block = system.position_x().data();
   for (int i = 0; i < 5; ++i) system.step(R(0.01));
   CHECK(system.capacity() == 64);
@@ -364,14 +366,14 @@ template <class System, Column C, class R>
 constexpr bool const_column =
     std::is_same_v<decltype(std::declval<System&>().template column<C>()), std::span<const R>>;
 
-TEST_CASE_TEMPLATE("per-particle damping states live in columns of R that move together", R,
-                   float, double) {
+TEST_CASE_TEMPLATE("per-particle damping states live in columns of R that move together", R, float,
+                   double) {
   // PerSecond and Exact: d, ln d's hi and lo, each a column of R (a step reads plain arrays),
   // read-only through column() (the three must agree); PerFrame's d stays writable.
-  using Damped = ParticleSystem<R, damping::PerSecond, position::Euler,
-                                features::PerParticleDamping>;
-  using FrameDamped = ParticleSystem<R, damping::PerFrame, position::Euler,
-                                     features::PerParticleDamping>;
+  using Damped =
+      ParticleSystem<R, damping::PerSecond, position::Euler, features::PerParticleDamping>;
+  using FrameDamped =
+      ParticleSystem<R, damping::PerFrame, position::Euler, features::PerParticleDamping>;
   static_assert(const_column<Damped, Column::damping, R>);
   static_assert(const_column<Damped, Column::damping_log_hi, R>);
   static_assert(
@@ -380,14 +382,14 @@ TEST_CASE_TEMPLATE("per-particle damping states live in columns of R that move t
   static_assert(!FrameDamped::template stores<Column::damping_log_hi>);
   // AccelerateThenDamp keeps d^t for the last step length beside d: its d is read-only too
   // (a write through the column would leave the kept d^t stale); set_damping refreshes both.
-  using ListingDamped = ParticleSystem<R, damping::AccelerateThenDamp, position::Euler,
-                                       features::PerParticleDamping>;
+  using ListingDamped =
+      ParticleSystem<R, damping::AccelerateThenDamp, position::Euler, features::PerParticleDamping>;
   CHECK(const_column<ListingDamped, Column::damping, R>);
   // Every column of a damping state is read-only where the state has it: ln d's lo part, and
   // d^t kept for the last step length (PerSecond and AccelerateThenDamp), whose write would
   // leave it stale against d; Exact keeps d and ln d as PerSecond does.
-  using ExactDamped = ParticleSystem<R, damping::Exact, position::Exact,
-                                     features::PerParticleDamping>;
+  using ExactDamped =
+      ParticleSystem<R, damping::Exact, position::Exact, features::PerParticleDamping>;
   CHECK(const_column<Damped, Column::damping_log_lo, R>);
   CHECK(const_column<Damped, Column::damping_retention, R>);
   CHECK(const_column<ListingDamped, Column::damping_retention, R>);
@@ -434,16 +436,18 @@ TEST_CASE_TEMPLATE("bad input is reported with the argument's name and value", R
     }
     return "(accepted)";
   };
-  CHECK(message([&] { system.spawn({nan, R(0), R(0)}, {}); }).find("'position'") !=
-        std::string::npos);
+  CHECK(message([&] {
+          system.spawn({nan, R(0), R(0)}, {});
+        }).find("'position'") != std::string::npos);
   CHECK(system.empty());  // nothing added
   system.spawn({}, {});
   CHECK(message([&] { system.set_damping(R(1.5)); }).find("'damping' = 1.5") != std::string::npos);
   CHECK(message([&] { system.set_lifetime(0, R(0)); }).find("'seconds' = 0") != std::string::npos);
   CHECK(message([&] { system.set_mass(0, R(-1)); }).find("'mass' = -1") != std::string::npos);
   CHECK(message([&] { system.kill(7); }).find("'index' = 7") != std::string::npos);
-  CHECK(message([&] { system.set_acceleration({R(0), real_infinity<R>, R(0)}); })
-            .find("'acceleration'") != std::string::npos);
+  CHECK(message([&] {
+          system.set_acceleration({R(0), real_infinity<R>, R(0)});
+        }).find("'acceleration'") != std::string::npos);
 #if POINTMASS_CHECKS
   CHECK(message([&] { system.step(R(-0.1)); }).find("step: argument 'duration'") !=
         std::string::npos);
@@ -491,7 +495,7 @@ TEST_CASE_TEMPLATE("the facets add members and no bytes", R, float, double) {
   static_assert(!Sparks::template has_column<Tag> && Full::template has_column<Tag>);
   static_assert(requires(const Full& s) { s.template column<Tag>(std::size_t{0}); });
   // Both column families answer on the same system: neither facet hides the other.
-  static_assert(requires(Full& s) {
+  static_assert(requires(Full & s) {
     s.template column<Tag>();
     s.template column<Column::age>();
   });

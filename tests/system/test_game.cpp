@@ -144,9 +144,9 @@ TEST_CASE("a user column follows its particle through kills, kill_if and expiry 
 }
 
 TEST_CASE("user columns: given at spawn, T{} otherwise, written by span and index, copied") {
-  using Painted = ParticleSystem<float, damping::None, position::Euler,
-                                 features::Column<ColourTag, Colour>,
-                                 features::Column<SpawnTag, int>>;
+  using Painted =
+      ParticleSystem<float, damping::None, position::Euler, features::Column<ColourTag, Colour>,
+                     features::Column<SpawnTag, int>>;
   static_assert(Painted::storage_bytes_per_particle == 24 + 4 + 4);
   static_assert(Painted::array_count == 8);
   Painted system;
@@ -171,8 +171,8 @@ TEST_CASE("user columns: given at spawn, T{} otherwise, written by span and inde
 }
 
 TEST_CASE("spawn_burst: count particles from a generator, reserving once") {
-  using Painted = ParticleSystem<float, damping::None, position::Euler,
-                                 features::Column<SpawnTag, int>>;
+  using Painted =
+      ParticleSystem<float, damping::None, position::Euler, features::Column<SpawnTag, int>>;
   Painted system;
   system.spawn({}, {}, -1);
   const std::size_t added = system.spawn_burst(1000, [](std::size_t k) {
@@ -272,8 +272,10 @@ TEST_CASE("handles: a moved-from system starts a new table (no free slot it does
   for (Named* moved_from : {&source, &target}) {
     REQUIRE(moved_from->size() == 0);
     CHECK(moved_from->handle_table_bytes() == 0);
-    const Named::Handle first = moved_from->spawn_handle(Vector3<double>{1, 2, 3}, Vector3<double>{});
-    const Named::Handle second = moved_from->spawn_handle(Vector3<double>{4, 5, 6}, Vector3<double>{});
+    const Named::Handle first =
+        moved_from->spawn_handle(Vector3<double>{1, 2, 3}, Vector3<double>{});
+    const Named::Handle second =
+        moved_from->spawn_handle(Vector3<double>{4, 5, 6}, Vector3<double>{});
     CHECK(first.slot == 0);  // new slots from the start, not the old free list's 5 and 2
     CHECK(second.slot == 1);
     CHECK(moved_from->find(first) == std::optional<std::size_t>{0});
@@ -326,8 +328,8 @@ TEST_CASE("handles: a handle from a system with more slots answers for nothing")
 
 TEST_CASE("handles: a slot's generation wraps by retiring the slot, old handles stay dead") {
   // 8-bit generations: a slot serves generations 0 .. 254, then is retired.
-  using Small = ParticleSystem<float, damping::None, position::Euler,
-                               features::BasicHandles<std::uint8_t>>;
+  using Small =
+      ParticleSystem<float, damping::None, position::Euler, features::BasicHandles<std::uint8_t>>;
   Small system;
   system.spawn({9, 9, 9}, {});  // a bystander that lives throughout
   const Small::Handle bystander = system.handle(0);
@@ -351,8 +353,8 @@ TEST_CASE("handles: a slot's generation wraps by retiring the slot, old handles 
 }
 
 TEST_CASE("expiry callback: each expiring particle once, in its final state, children next step") {
-  using Fireworks = ParticleSystem<double, damping::PerSecond, position::Euler,
-                                   features::Lifetime, features::Column<SpawnTag, int>>;
+  using Fireworks = ParticleSystem<double, damping::PerSecond, position::Euler, features::Lifetime,
+                                   features::Column<SpawnTag, int>>;
   Fireworks system;
   system.set_acceleration({0, -9.8, 0});
   system.set_damping(0.5);
@@ -420,8 +422,8 @@ TEST_CASE("expiry callback: each expiring particle once, in its final state, chi
   CHECK(system.size() == 100);  // the children
 }
 
-TEST_CASE_TEMPLATE("interpolation: alpha 0 is the previous position, 1 the current, bit for bit",
-                   R, float, double) {
+TEST_CASE_TEMPLATE("interpolation: alpha 0 is the previous position, 1 the current, bit for bit", R,
+                   float, double) {
   // Kinematic: its last addition (a t^2 / 2) leaves positions off the grid of the previous ones.
   using Drawn = ParticleSystem<R, damping::PerSecond, position::Kinematic, features::Interpolation>;
   std::mt19937 random(5);
@@ -434,8 +436,8 @@ TEST_CASE_TEMPLATE("interpolation: alpha 0 is the previous position, 1 the curre
   system.spawn({-R(0), R(0), -R(0)}, {});  // signed zeros must come back as they are
   // Large steps that end near 0: previous + (current - previous) rounds away from current.
   for (const R start : {R(1000.3), R(-77.7), R(123456.7)}) {
-    system.spawn({start, -start, start}, {-start * R(60) * R(0.999987), start * R(60) * R(0.99993),
-                                          -start * R(59.99)});
+    system.spawn({start, -start, start},
+                 {-start * R(60) * R(0.999987), start * R(60) * R(0.99993), -start * R(59.99)});
   }
   for (int frame = 0; frame < 3; ++frame) {
     std::vector<Vector3<R>> before;
@@ -449,11 +451,10 @@ TEST_CASE_TEMPLATE("interpolation: alpha 0 is the previous position, 1 the curre
         const Vector3<R> expected = alpha > R(0) ? system.position(i) : before[i];
         CHECK(same_bits(system.previous_position(i), before[i]));
         CHECK(same_bits(system.interpolated_position(i, alpha), expected));
-        CHECK(same_bits(Vector3<R>{packed[3 * i], packed[3 * i + 1], packed[3 * i + 2]},
-                        expected));
-        CHECK(same_bits(Vector3<R>{interleaved[5 * i + 1], interleaved[5 * i + 2],
-                                   interleaved[5 * i + 3]},
-                        expected));
+        CHECK(same_bits(Vector3<R>{packed[3 * i], packed[3 * i + 1], packed[3 * i + 2]}, expected));
+        CHECK(same_bits(
+            Vector3<R>{interleaved[5 * i + 1], interleaved[5 * i + 2], interleaved[5 * i + 3]},
+            expected));
         CHECK(interleaved[5 * i] == R(-7));  // the other attributes are left alone
         CHECK(interleaved[5 * i + 4] == R(-7));
       }
@@ -462,8 +463,8 @@ TEST_CASE_TEMPLATE("interpolation: alpha 0 is the previous position, 1 the curre
     for (std::size_t i = 0; i < system.size(); ++i) {
       const Vector3<R> half = system.interpolated_position(i, R(0.5));
       const Vector3<R> mid = (before[i] + system.position(i)) * R(0.5);
-      CHECK(magnitude(half - mid) <= R(4) * std::numeric_limits<R>::epsilon() *
-                                         (magnitude(mid) + R(1)));
+      CHECK(magnitude(half - mid) <=
+            R(4) * std::numeric_limits<R>::epsilon() * (magnitude(mid) + R(1)));
     }
   }
   // A jump by set_position does not streak: both ends move.
@@ -475,8 +476,10 @@ TEST_CASE_TEMPLATE("interpolation: alpha 0 is the previous position, 1 the curre
   CHECK(same_bits(interpolate(a, b, R(1)), b));
 }
 
-TEST_CASE_TEMPLATE("interpolation: alpha is the fraction of the way from the previous position "
-                   "to the current one", R, float, double) {
+TEST_CASE_TEMPLATE(
+    "interpolation: alpha is the fraction of the way from the previous position "
+    "to the current one",
+    R, float, double) {
   // Every number here is exact in binary, so the expected positions are exact: a step of
   // 0.25 s at (4, -8, 2) m/s moves (1, -2, 0.5) m, and a quarter and three quarters of that
   // are exact too. (Alpha 0, 0.5 and 1 cannot tell the two ends apart: a formula with the

@@ -79,9 +79,8 @@ TEST_CASE("a parallel step with an expiry callback reports what the serial one d
   std::vector<int> serial_seen, parallel_seen;
   for (int step = 0; step < 4; ++step) {
     serial.step(0.02, [&](std::size_t i) { serial_seen.push_back(serial.column<Id>(i)); });
-    pointmass::step(std::execution::par_unseq, parallel, 0.02, [&](std::size_t i) {
-      parallel_seen.push_back(parallel.column<Id>(i));
-    });
+    pointmass::step(std::execution::par_unseq, parallel, 0.02,
+                    [&](std::size_t i) { parallel_seen.push_back(parallel.column<Id>(i)); });
   }
   CHECK(serial_seen.size() > 30'000);
   CHECK(serial_seen == parallel_seen);  // the same particles, in the same order
@@ -93,8 +92,8 @@ TEST_CASE("a parallel step keeps each particle's d^t for its step length, as the
   // column); a step of the same length then computes no exponential. The parallel step must
   // leave the column known to hold d^t for its length, as system.step does, and agree with
   // the serial step bit for bit over steps of one length and of another.
-  using System = ParticleSystem<float, damping::PerSecond, position::Euler,
-                                features::PerParticleDamping>;
+  using System =
+      ParticleSystem<float, damping::PerSecond, position::Euler, features::PerParticleDamping>;
   static_assert(System::stores<Column::damping_retention>);
   std::mt19937 engine(11);
   System serial(40'000);
@@ -109,7 +108,7 @@ TEST_CASE("a parallel step keeps each particle's d^t for its step length, as the
     pointmass::step(std::execution::par_unseq, parallel, t);
     CHECK_FALSE(serial.step_parameters(t).refresh);
     CHECK_FALSE(parallel.step_parameters(t).refresh);  // d^t kept for t: no refresh pass
-    CHECK(parallel.step_parameters(t / 2).refresh);     // another length: computed again
+    CHECK(parallel.step_parameters(t / 2).refresh);    // another length: computed again
   }
   bool same = true;
   for (std::size_t i = 0; i < serial.size(); ++i) {
@@ -119,9 +118,10 @@ TEST_CASE("a parallel step keeps each particle's d^t for its step length, as the
   CHECK(same);
 }
 
-TEST_CASE_TEMPLATE("a parallel step keeps the uniform damping factors for its step length, as "
-                   "the serial one",
-                   R, float, double) {
+TEST_CASE_TEMPLATE(
+    "a parallel step keeps the uniform damping factors for its step length, as "
+    "the serial one",
+    R, float, double) {
   // step keeps the factors of its last length (ParticleSystem::step_parameters reads them);
   // the parallel step must keep them too, forget them with set_damping, and step as the
   // serial step does with them, bit for bit.
@@ -168,7 +168,7 @@ TEST_CASE("a parallel step under FlushDenormals flushes on every thread, as the 
   // call covers the workers too. TBB's workers keep the modes they had when its pool first
   // ran: the pool runs here once without the guard first, so that its workers do not flush
   // by themselves and the step has to give them the caller's modes.
-  if (!FlushDenormals::supported) return;  // (only run with --no-skip)
+  if (!FlushDenormals::supported) return;    // (only run with --no-skip)
   constexpr std::size_t count = 16384 * 16;  // 16 chunks, for both threads to take some
   const float tiny = std::numeric_limits<float>::min() / 64.0f;
   ParticleSystem<float> serial(count);
@@ -200,7 +200,8 @@ TEST_CASE("a parallel step under FlushDenormals flushes on every thread, as the 
       });
       for (std::size_t i = 0; i < items.size(); ++i) ran_on[i] = items[i].thread;
       std::sort(ran_on.begin(), ran_on.end());
-      threads = static_cast<std::size_t>(std::unique(ran_on.begin(), ran_on.end()) - ran_on.begin());
+      threads =
+          static_cast<std::size_t>(std::unique(ran_on.begin(), ran_on.end()) - ran_on.begin());
     }
     CAPTURE(std::thread::hardware_concurrency());
     REQUIRE(threads >= 2);

@@ -85,8 +85,7 @@ void step_side_by_side(std::size_t count, int steps, Walk walk) {
       }
     }
     if (walk == Walk::backward_only) {
-      System::step_range_backward(system.arrays(), 0, system.size(),
-                                  system.step_parameters(t));
+      System::step_range_backward(system.arrays(), 0, system.size(), system.step_parameters(t));
       system.finish_step();
     } else {
       CHECK(system.next_step_backward() == (walk == Walk::by_step_alternating && step % 2 == 1));
@@ -135,22 +134,20 @@ TEST_CASE_TEMPLATE("backward walk: every particle takes its own step, once", R, 
   using System = ParticleSystem<R>;
   static_assert(System::backward_chunk % System::vector_block == 0);
   constexpr std::size_t chunk = System::backward_chunk;
-  for (const std::size_t count :
-       {std::size_t{1}, std::size_t{15}, std::size_t{16}, chunk - 1, chunk, chunk + 1,
-        3 * chunk + 17, std::size_t{1000}}) {
+  for (const std::size_t count : {std::size_t{1}, std::size_t{15}, std::size_t{16}, chunk - 1,
+                                  chunk, chunk + 1, 3 * chunk + 17, std::size_t{1000}}) {
     step_side_by_side<R, damping::PerSecond, position::Euler>(count, 3, Walk::backward_only);
   }
 }
 
 TEST_CASE_TEMPLATE("alternating walk with per-particle values, forces and lifetimes", R, float,
                    double) {
-  using Featured = ParticleSystem<R, damping::Exact, position::Exact,
-                                  features::PerParticleDamping,
+  using Featured = ParticleSystem<R, damping::Exact, position::Exact, features::PerParticleDamping,
                                   features::PerParticleAcceleration, features::ForceAccumulator,
                                   features::Lifetime>;
-  constexpr std::size_t count = 2 * Featured::alternation_floor_bytes /
-                                    Featured::storage_bytes_per_particle +
-                                Featured::backward_chunk / 2;
+  constexpr std::size_t count =
+      2 * Featured::alternation_floor_bytes / Featured::storage_bytes_per_particle +
+      Featured::backward_chunk / 2;
   REQUIRE(Featured::alternates(count));
   step_side_by_side<R, damping::Exact, position::Exact, features::PerParticleDamping,
                     features::PerParticleAcceleration, features::ForceAccumulator,
@@ -159,8 +156,8 @@ TEST_CASE_TEMPLATE("alternating walk with per-particle values, forces and lifeti
                     features::PerParticleAcceleration>(531, 3, Walk::backward_only);
 }
 
-TEST_CASE_TEMPLATE("the walk alternates between its size bounds and walks forwards outside them",
-                   R, float, double) {
+TEST_CASE_TEMPLATE("the walk alternates between its size bounds and walks forwards outside them", R,
+                   float, double) {
   using System = ParticleSystem<R>;
   constexpr std::size_t bytes = System::storage_bytes_per_particle;
   constexpr std::size_t smallest = System::alternation_floor_bytes / bytes + 1;

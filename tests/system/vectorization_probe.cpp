@@ -51,7 +51,8 @@ void pow_unit_loop(const detail::SplitLog<R>* ln_d, R* out, std::size_t n, R t) 
 }
 
 template <class R>
-void exp_unit_loop(const detail::SplitLog<R>* ln_d, R* kept, R* kept_minus_one, std::size_t n, R t) {
+void exp_unit_loop(const detail::SplitLog<R>* ln_d, R* kept, R* kept_minus_one, std::size_t n,
+                   R t) {
   const std::size_t m = n - n % 16;
 #if defined(__clang__)
 #pragma clang loop vectorize(assume_safety)
@@ -73,8 +74,8 @@ template void pow_unit_loop<double>(const detail::SplitLog<double>*, double*, st
 template void exp_unit_loop<float>(const detail::SplitLog<float>*, float*, float*, std::size_t,
                                    float);
 #elif POINTMASS_PROBE_EXPONENTIAL == 4
-template void exp_unit_loop<double>(const detail::SplitLog<double>*, double*, double*,
-                                    std::size_t, double);
+template void exp_unit_loop<double>(const detail::SplitLog<double>*, double*, double*, std::size_t,
+                                    double);
 #endif
 
 #else

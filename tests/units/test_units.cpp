@@ -11,8 +11,8 @@
 #include <string>
 #include <type_traits>
 
-#include <pointmass/particle.hpp>
 #include <pointmass/extras/scenes.hpp>
+#include <pointmass/particle.hpp>
 #include <pointmass/units.hpp>
 
 #include "tolerance.hpp"
@@ -128,8 +128,7 @@ TEST_CASE_TEMPLATE("values come back as the SI quantities they were given", R, f
   CHECK(particle.mass() == R(2) * si::kilograms);
 }
 
-TEST_CASE_TEMPLATE("a duration converts to seconds for the damping's exponent", R, float,
-                   double) {
+TEST_CASE_TEMPLATE("a duration converts to seconds for the damping's exponent", R, float, double) {
   static_assert(std::is_same_v<pm::scalar_t<pm::units::time<R>>, R>);
   static_assert(std::is_same_v<pm::scalar_t<pm::units::length<R>>, R>);
   CHECK(pm::in_seconds(R(0.25) * si::seconds) == R(0.25));
@@ -146,8 +145,7 @@ TEST_CASE_TEMPLATE("the step's equations run on quantities and give the closed f
   const Vector3<pm::units::acceleration<R>> a =
       Vector3<R>{R(0), R(-20), R(0)} * si::meters_per_second_squared;
   const pm::units::time<R> t = R(0.5) * si::seconds;
-  pm::advance<pm::damping::None, pm::position::Kinematic>(p, v, a, t,
-                                                          pm::damping::None::Factors{});
+  pm::advance<pm::damping::None, pm::position::Kinematic>(p, v, a, t, pm::damping::None::Factors{});
   // By hand: y = 1.5 + 30 * 0.5 - 20 * 0.125 = 14, z = 40 * 0.5 = 20; vy = 30 - 10 = 20.
   POINTMASS_CHECK_CLOSE(numbers(p), (Vector3<R>{R(0), R(14), R(20)}), R(8));
   POINTMASS_CHECK_CLOSE(numbers(v), (Vector3<R>{R(0), R(20), R(40)}), R(8));
@@ -169,9 +167,9 @@ TEST_CASE_TEMPLATE("bad values are rejected with the argument and its value in S
 
   CHECK_THROWS_AS(particle.set_inverse_mass(R(-1) / si::kilograms), std::invalid_argument);
   CHECK_THROWS_AS(particle.set_damping(R(1.5)), std::invalid_argument);
-  CHECK_THROWS_AS(
-      particle.set_velocity(Vector3<R>{R(0), std::numeric_limits<R>::infinity(), R(0)} * si::meters_per_second),
-      std::invalid_argument);
+  CHECK_THROWS_AS(particle.set_velocity(Vector3<R>{R(0), std::numeric_limits<R>::infinity(), R(0)} *
+                                        si::meters_per_second),
+                  std::invalid_argument);
 #if POINTMASS_CHECKS
   CHECK_THROWS_AS(particle.integrate(R(-0.1) * si::seconds), std::invalid_argument);
 #endif
@@ -179,9 +177,9 @@ TEST_CASE_TEMPLATE("bad values are rejected with the argument and its value in S
 
 TEST_CASE_TEMPLATE("the SI particle costs no storage and stays trivially copyable", R, float,
                    double) {
+  using pm::damping::Exact;
   using pm::damping::None;
   using pm::damping::PerSecond;
-  using pm::damping::Exact;
   static_assert(sizeof(pm::units::Particle<R>) == sizeof(pm::Particle<R>));
   static_assert(sizeof(pm::units::Particle<R, None>) == sizeof(pm::Particle<R, None>));
   static_assert(sizeof(pm::units::Particle<R, Exact, pm::position::Exact>) ==

@@ -49,8 +49,7 @@ const pm::scenes::SpringScene<double> scene{};
 length_t reference_position(duration_t end) {
   odeint::runge_kutta4<state_type, double, deriv_type, duration_t> stepper;
   state_type x(scene.start.x * si::meters, 0.0 * si::meters_per_second);
-  const quantity<si::frequency, double> omega =
-      std::sqrt(scene.stiffness / scene.mass) * si::hertz;
+  const quantity<si::frequency, double> omega = std::sqrt(scene.stiffness / scene.mass) * si::hertz;
   const duration_t dt = (1.0 / 4096) * si::seconds;
   odeint::integrate_const(stepper, Spring{omega}, x, 0.0 * si::seconds, end, dt);
   return fusion::at_c<0>(x);

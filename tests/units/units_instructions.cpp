@@ -11,8 +11,8 @@
 #include <cstring>
 #include <vector>
 
-#include <pointmass/particle.hpp>
 #include <pointmass/extras/scenes.hpp>
+#include <pointmass/particle.hpp>
 #include <pointmass/units.hpp>
 
 #include "units_scene.hpp"

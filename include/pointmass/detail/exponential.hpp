@@ -68,15 +68,15 @@ struct ExpTraits<float> {
   static constexpr bits split_mask = 0xFFFFF000u;  ///< keeps 12 significant bits
   static constexpr float shifter = 0x1.8p23f;      ///< 1.5 * 2^23: x + shifter rounds x
   static constexpr float inv_ln2 = 0x1.715476p+0f;
-  static constexpr float ln2_hi = 0x1.62e4p-1f;     ///< 15 bits: n ln2_hi exact for |n| < 2^9
-  static constexpr float ln2_lo = 0x1.7f7d1cp-20f;  ///< ln 2 - ln2_hi
-  static constexpr float x_min = -104.0f;           ///< e^-104 < 2^-150: rounds to 0
-  static constexpr float x_max = 89.0f;             ///< e^89 > FLT_MAX: overflows
-  static constexpr int series_terms = 6;            ///< 1/2! .. 1/7!
-  static constexpr float expm1_exact_scale = 20.0f; ///< 2^n - 1 exact for n <= 20
-  static constexpr float log_of_zero = -0x1p96f;    ///< ln 0: t ln 0 < x_min for t >= 2^-89
-  static constexpr float normal_x_min = -86.0f;     ///< e^x normal for x_hi >= this: n >= -124
-  static constexpr float normal_x_max = 87.0f;      ///< and <= this: n <= 126
+  static constexpr float ln2_hi = 0x1.62e4p-1f;      ///< 15 bits: n ln2_hi exact for |n| < 2^9
+  static constexpr float ln2_lo = 0x1.7f7d1cp-20f;   ///< ln 2 - ln2_hi
+  static constexpr float x_min = -104.0f;            ///< e^-104 < 2^-150: rounds to 0
+  static constexpr float x_max = 89.0f;              ///< e^89 > FLT_MAX: overflows
+  static constexpr int series_terms = 6;             ///< 1/2! .. 1/7!
+  static constexpr float expm1_exact_scale = 20.0f;  ///< 2^n - 1 exact for n <= 20
+  static constexpr float log_of_zero = -0x1p96f;     ///< ln 0: t ln 0 < x_min for t >= 2^-89
+  static constexpr float normal_x_min = -86.0f;      ///< e^x normal for x_hi >= this: n >= -124
+  static constexpr float normal_x_max = 87.0f;       ///< and <= this: n <= 126
 };
 
 template <>
@@ -94,8 +94,8 @@ struct ExpTraits<double> {
   static constexpr int series_terms = 12;  ///< 1/2! .. 1/13!
   static constexpr double expm1_exact_scale = 40.0;
   static constexpr double log_of_zero = -0x1p960;  ///< ln 0: t ln 0 < x_min for t >= 2^-950
-  static constexpr double normal_x_min = -700.0;  ///< e^x normal for x_hi >= this: n >= -1010
-  static constexpr double normal_x_max = 700.0;   ///< and <= this: n <= 1010
+  static constexpr double normal_x_min = -700.0;   ///< e^x normal for x_hi >= this: n >= -1010
+  static constexpr double normal_x_max = 700.0;    ///< and <= this: n <= 1010
 };
 
 #if LDBL_MANT_DIG == DBL_MANT_DIG && LDBL_MAX_EXP == DBL_MAX_EXP
@@ -151,7 +151,7 @@ POINTMASS_HD constexpr R bit_select(bool condition, R if_true, R if_false) noexc
     using B = typename ExpTraits<R>::bits;
     const B mask = B(0) - static_cast<B>(condition);
     return __builtin_bit_cast(R, static_cast<B>((__builtin_bit_cast(B, if_true) & mask) |
-                                           (__builtin_bit_cast(B, if_false) & ~mask)));
+                                                (__builtin_bit_cast(B, if_false) & ~mask)));
   } else {
     return condition ? if_true : if_false;
   }
@@ -177,7 +177,7 @@ POINTMASS_HD constexpr R mask_select(typename ExpTraits<R>::bits mask, R if_set,
                                      R if_clear) noexcept {
   using B = typename ExpTraits<R>::bits;
   return __builtin_bit_cast(R, static_cast<B>((__builtin_bit_cast(B, if_set) & mask) |
-                                         (__builtin_bit_cast(B, if_clear) & ~mask)));
+                                              (__builtin_bit_cast(B, if_clear) & ~mask)));
 }
 
 /// a < b ? if_less : otherwise, per element without a branch (masks for float and double).
@@ -195,8 +195,8 @@ POINTMASS_HD constexpr R select_if_less(R a, R b, R if_less, R otherwise) noexce
 template <class R>
 POINTMASS_HD constexpr R split_high(R x) noexcept {
   using T = ExpTraits<R>;
-  return __builtin_bit_cast(R, static_cast<typename T::bits>(__builtin_bit_cast(typename T::bits, x) &
-                                                        T::split_mask));
+  return __builtin_bit_cast(
+      R, static_cast<typename T::bits>(__builtin_bit_cast(typename T::bits, x) & T::split_mask));
 }
 
 /// A double-double: the number hi + lo, |lo| at most about an ulp of hi (some 106 bits).
@@ -270,8 +270,8 @@ POINTMASS_HD constexpr LogReduced log_reduce(double d) noexcept {
   }
   const B bits = __builtin_bit_cast(B, d);
   k += static_cast<double>(static_cast<int>((bits >> 52) & 0x7FFu) - 1023);
-  double m = __builtin_bit_cast(double, static_cast<B>((bits & 0x000FFFFFFFFFFFFFu) |
-                                                       0x3FF0000000000000u));  // [1, 2)
+  double m = __builtin_bit_cast(
+      double, static_cast<B>((bits & 0x000FFFFFFFFFFFFFu) | 0x3FF0000000000000u));  // [1, 2)
   if (m > 0x1.6a09e667f3bcdp+0) {  // above sqrt(2): halve it
     m *= 0.5;
     k += 1.0;
@@ -396,11 +396,12 @@ POINTMASS_HD constexpr R power_of_two(R m) noexcept {
   using B = typename T::bits;
   const B shifted = __builtin_bit_cast(B, m + T::shifter);  // low bits: m, two's complement
   return __builtin_bit_cast(R, static_cast<B>(static_cast<B>(shifted + B(T::exponent_bias))
-                                         << (T::significand_bits - 1)));
+                                              << (T::significand_bits - 1)));
 }
 
 template <class R>
-POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr ExpReduced<R> exp_reduce(R x_hi, R x_lo) noexcept {
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr ExpReduced<R> exp_reduce(R x_hi,
+                                                                               R x_lo) noexcept {
   using T = ExpTraits<R>;
   // Clamp (NaN passes through); a clamped x drops its low part.
   using B = typename T::bits;
@@ -409,7 +410,7 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr ExpReduced<R> exp_reduce(R
   const R x = mask_select(below, T::x_min, mask_select(above, T::x_max, x_hi));
   const R low = mask_select(static_cast<B>(below | above), R(0), x_lo);
   const R n = (x * T::inv_ln2 + T::shifter) - T::shifter;  // round(x / ln 2)
-  const R r_hi = x - n * T::ln2_hi;                         // exact
+  const R r_hi = x - n * T::ln2_hi;                        // exact
   const R r_lo = low - n * T::ln2_lo;
   const R r = r_hi + r_lo;
   const R s = r_hi + (r_lo + (r * r) * exp_series(r));
@@ -428,7 +429,8 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R exp_from(const ExpReduce
 
 /// e^x - 1 from the reduction: (2^n - 1) + 2^n s while 2^n - 1 is exact, else e^x - 1.
 template <class R>
-POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R expm1_from(const ExpReduced<R>& e) noexcept {
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R expm1_from(
+    const ExpReduced<R>& e) noexcept {
   const R two_n = e.scale1 * e.scale2;
   const R near = (two_n - R(1)) + two_n * e.s;
   return mask_select(less_mask(ExpTraits<R>::expm1_exact_scale, e.n), exp_from(e) - R(1), near);
@@ -484,7 +486,8 @@ struct UnitPower {
 /// t = 0 (even d = 0) and for d = 1; exactly 0 and -1 for d = 0 and t >= 2^-89 s. Raises no
 /// floating-point exception but inexact and underflow.
 template <Real R>
-POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr UnitPower<R> exp_unit(const SplitLog<R>& ln_d, R t) noexcept {
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr UnitPower<R> exp_unit(const SplitLog<R>& ln_d,
+                                                                            R t) noexcept {
   const bool none_taken = real_equal(t, R(0));
   if constexpr (wider_than_double_v<R>) {
     const bool all_taken = real_equal(ln_d.hi, -real_infinity<R>) && !none_taken;
@@ -498,8 +501,8 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr UnitPower<R> exp_unit(cons
     const R x_lo = split.lo * ln_d.hi + t * ln_d.lo;
     const ExpReduced<R> e = exp_reduce(x_hi, x_lo);
     const R x = x_hi + x_lo;
-    return {bit_select(none_taken, R(1), exp_from(e)),
-            bit_select(none_taken, R(0), expm1_from(e)), bit_select(none_taken, R(0), x)};
+    return {bit_select(none_taken, R(1), exp_from(e)), bit_select(none_taken, R(0), expm1_from(e)),
+            bit_select(none_taken, R(0), x)};
   }
 }
 
@@ -507,15 +510,15 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr UnitPower<R> exp_unit(cons
 /// Exactly 1 for t = 0 (even d = 0) and for d = 1; exactly 0 for d = 0 and t >= 2^-89 s
 /// (float; double 2^-950 s). Raises no floating-point exception but inexact and underflow.
 template <Real R>
-POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R pow_unit(const SplitLog<R>& ln_d, R t) noexcept {
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R pow_unit(const SplitLog<R>& ln_d,
+                                                                 R t) noexcept {
   const bool none_taken = real_equal(t, R(0));
   if constexpr (wider_than_double_v<R>) {
     const bool all_taken = real_equal(ln_d.hi, -real_infinity<R>);
     return none_taken ? R(1) : (all_taken ? R(0) : real_exp(t * ln_d.hi));
   } else {
     const SplitTime<R> split = split_time(t);
-    const R kept =
-        exp_from(exp_reduce(split.hi * ln_d.hi, split.lo * ln_d.hi + t * ln_d.lo));
+    const R kept = exp_from(exp_reduce(split.hi * ln_d.hi, split.lo * ln_d.hi + t * ln_d.lo));
     return bit_select(none_taken, R(1), kept);
   }
 }
@@ -602,4 +605,3 @@ POINTMASS_HD constexpr R phi_series(R x) noexcept {
 }
 
 }  // namespace pointmass::detail
-

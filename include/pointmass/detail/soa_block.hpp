@@ -32,10 +32,9 @@ class SoaBlock {
 
   static constexpr std::size_t page = 4096;
   static constexpr std::size_t alignment = 64;
-  static constexpr std::size_t stagger =
-      448 < page / Layout::array_count / alignment * alignment
-          ? 448
-          : page / Layout::array_count / alignment * alignment;
+  static constexpr std::size_t stagger = 448 < page / Layout::array_count / alignment * alignment
+                                             ? 448
+                                             : page / Layout::array_count / alignment * alignment;
 
   /// The largest capacity whose block size is representable: every size computation below
   /// stays under PTRDIFF_MAX for any capacity up to this.
@@ -90,10 +89,9 @@ class SoaBlock {
 
   void allocate(std::size_t capacity) {
     std::size_t total = 0;
-    Layout::for_each_array(arrays_, [&](auto* array) {
-      total += array_span_bytes(capacity * sizeof(*array));
-    });
-    block_ = static_cast<std::byte*>(::operator new(total, std::align_val_t{alignment}));
+    Layout::for_each_array(
+        arrays_, [&](auto* array) { total += array_span_bytes(capacity * sizeof(*array)); });
+    block_ = static_cast<std::byte*>(::operator new (total, std::align_val_t{alignment}));
     capacity_ = capacity;
     std::size_t offset = 0;
     Layout::for_each_array(arrays_, [&](auto*& array) {
@@ -114,7 +112,7 @@ class SoaBlock {
   }
 
   void release() noexcept {
-    if (block_ != nullptr) ::operator delete(block_, std::align_val_t{alignment});
+    if (block_ != nullptr) ::operator delete (block_, std::align_val_t{alignment});
     block_ = nullptr;
   }
 

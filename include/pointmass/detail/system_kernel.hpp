@@ -66,7 +66,8 @@ class SystemKernel {
   struct StepParameters {
     R duration{};
     [[no_unique_address]] std::conditional_t<Layout::per_particle_damping, NoFactors,
-                                             damping_factors> factors{};
+                                             damping_factors>
+        factors{};
     Vector3<R> acceleration{};
     /// With the damping_retention column (features.hpp): compute each particle's d^t for
     /// this duration and keep it, before its step. True unless the system knows the column
@@ -83,8 +84,8 @@ class SystemKernel {
   static constexpr bool vectorisable =
       !Layout::per_particle_damping || Layout::per_particle_retention ||
       std::is_same_v<D, damping::PerFrame> ||
-      ((std::is_same_v<D, damping::PerSecond> || std::is_same_v<D, damping::Exact>) &&
-       !wider_than_double_v<R>);
+      ((std::is_same_v<D, damping::PerSecond> ||
+        std::is_same_v<D, damping::Exact>)&&!wider_than_double_v<R>);
 
   /// True when the step loop skips the select that keeps immovable particles in place, for
   /// segments whose particles are all movable (forces, positions stored as R, float or
@@ -239,9 +240,9 @@ class SystemKernel {
   /// chunks from the last to the first, each chunk forwards through the same vectorised
   /// loop (a single copy of it in this function: clang 14 lost the loop's no-alias mark on
   /// a second inlined copy and left that copy scalar). Same precondition as step_range.
-  static void step_range_backward(const Arrays& arrays_in, std::size_t begin, std::size_t end,
-                                  const StepParameters& parameters_in) noexcept(
-      !POINTMASS_HOST_CHECKS) {
+  static void step_range_backward(
+      const Arrays& arrays_in, std::size_t begin, std::size_t end,
+      const StepParameters& parameters_in) noexcept(!POINTMASS_HOST_CHECKS) {
 #if POINTMASS_HOST_CHECKS
     if (!check_range("step_range_backward", begin, end, arrays_in.size)) return;
 #endif
@@ -305,8 +306,7 @@ class SystemKernel {
   template <bool AllMovable>
   POINTMASS_DETAIL_ALWAYS_INLINE static void step_loop(const Arrays& arrays, std::size_t first,
                                                        std::size_t count,
-                                                       const StepParameters& parameters)
-      noexcept {
+                                                       const StepParameters& parameters) noexcept {
     const std::size_t blocked = count & ~(vector_block - 1);
     POINTMASS_DETAIL_INDEPENDENT_ITERATIONS  // the step loop (tests/system probes this line)
     for (std::size_t k = 0; k < blocked; ++k) step_kept<AllMovable>(arrays, first + k, parameters);
@@ -342,8 +342,10 @@ class SystemKernel {
 
   // Adds the particle's accumulated force times its inverse mass to (ax, ay, az), clears the
   // accumulator, and returns the inverse mass.
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr R apply_forces(
-      const Arrays& arrays, std::size_t i, R& ax, R& ay, R& az) noexcept {
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr R apply_forces(const Arrays& arrays,
+                                                                              std::size_t i, R& ax,
+                                                                              R& ay,
+                                                                              R& az) noexcept {
     const R inverse_mass = arrays.inverse_mass[i];
     ax = ax + arrays.force_x[i] * inverse_mass;
     ay = ay + arrays.force_y[i] * inverse_mass;
@@ -400,15 +402,13 @@ class SystemKernel {
 
   // condition ? if_true : if_false, as bit operations (g++ -O2 does not if-convert `?:` here).
   template <class T>
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr T select(bool condition,
-                                                                        T if_true,
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr T select(bool condition, T if_true,
                                                                         T if_false) noexcept {
     if constexpr (sizeof(T) == 4 || sizeof(T) == 8) {
       using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
       const Bits mask = Bits(0) - static_cast<Bits>(condition);
-      return __builtin_bit_cast(
-          T, static_cast<Bits>((__builtin_bit_cast(Bits, if_true) & mask) |
-                               (__builtin_bit_cast(Bits, if_false) & ~mask)));
+      return __builtin_bit_cast(T, static_cast<Bits>((__builtin_bit_cast(Bits, if_true) & mask) |
+                                                     (__builtin_bit_cast(Bits, if_false) & ~mask)));
     } else {
       return condition ? if_true : if_false;
     }

@@ -55,8 +55,7 @@ class SystemState {
   // True when a step keeps its uniform damping factors and length (-1 before the first step
   // and after set_damping), so that the next step of the same length computes no exponential,
   // as a Particle does; with per-particle damping the damping_retention column keeps d^t.
-  static constexpr bool keeps_factors =
-      !Layout::per_particle_damping && keeps_factors_v<D, R>;
+  static constexpr bool keeps_factors = !Layout::per_particle_damping && keeps_factors_v<D, R>;
   using position_value = typename Storage::value;
   using user_columns = typename Layout::user_columns;
   static constexpr std::size_t user_column_count = Layout::user_column_count;
@@ -71,9 +70,9 @@ class SystemState {
                 "ParticleSystem: at most one features::Handles / BasicHandles<G>");
   template <std::size_t... I>
   static constexpr bool unique_tags(std::index_sequence<I...>) {
-    return ((Layout::template user_index<typename std::tuple_element_t<I, user_columns>::tag> ==
-             I) &&
-            ...);
+    return (
+        (Layout::template user_index<typename std::tuple_element_t<I, user_columns>::tag> == I) &&
+        ...);
   }
   static_assert(unique_tags(std::make_index_sequence<user_column_count>{}),
                 "ParticleSystem: two features::Column<Tag, T> with the same Tag");
@@ -127,8 +126,7 @@ class SystemState {
   [[no_unique_address]] Table handles_{};
   // The step length the damping_retention column holds d^t for (features.hpp); -1: none.
   R retention_duration_ = R(-1);
-  [[no_unique_address]] std::conditional_t<keeps_factors, KeptFactors<D, R>, NoKeptFactors>
-      kept_{};
+  [[no_unique_address]] std::conditional_t<keeps_factors, KeptFactors<D, R>, NoKeptFactors> kept_{};
 
   // --- size and capacity ---------------------------------------------------------------------
 
@@ -175,8 +173,9 @@ class SystemState {
   void grow() {
     const std::size_t current = capacity();
     if (current >= max_size()) throw_length_error("spawn", current + 1);
-    const std::size_t doubled = current < 8 ? 16 : current > max_size() / 2 ? max_size()
-                                                                             : 2 * current;
+    const std::size_t doubled = current < 8                ? 16
+                                : current > max_size() / 2 ? max_size()
+                                                           : 2 * current;
     reserve_checked(std::min(doubled, max_size()));
   }
   // Room for `count` more particles at once (a burst): at least doubling, as grow() would.
@@ -190,8 +189,8 @@ class SystemState {
     }
   }
 
-  bool valid_index([[maybe_unused]] const char* function,
-                   [[maybe_unused]] std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
+  bool valid_index([[maybe_unused]] const char* function, [[maybe_unused]] std::size_t i) const
+      noexcept(!POINTMASS_HOST_CHECKS) {
 #if POINTMASS_HOST_CHECKS
     return check_index(function, i, size());
 #else
@@ -598,36 +597,48 @@ class SystemState {
     if constexpr (has_interpolation) current = real_equal(alpha, R(1));
     if (current) {
       if constexpr (compensated) {  // hi + lo, in the wider type: the store rounds it once
-        output_loop<Scattered>(first, last, [&](std::size_t i) {
-          return Vector3<position_value>{
-              Storage::value_of(a.position_x[i], a.position_error_x[i]),
-              Storage::value_of(a.position_y[i], a.position_error_y[i]),
-              Storage::value_of(a.position_z[i], a.position_error_z[i])};
-        }, store_one);
+        output_loop<Scattered>(
+            first, last,
+            [&](std::size_t i) {
+              return Vector3<position_value>{
+                  Storage::value_of(a.position_x[i], a.position_error_x[i]),
+                  Storage::value_of(a.position_y[i], a.position_error_y[i]),
+                  Storage::value_of(a.position_z[i], a.position_error_z[i])};
+            },
+            store_one);
       } else {
-        output_loop<Scattered>(first, last, [&](std::size_t i) {
-          return Vector3<E>{a.position_x[i], a.position_y[i], a.position_z[i]};
-        }, store_one);
+        output_loop<Scattered>(
+            first, last,
+            [&](std::size_t i) {
+              return Vector3<E>{a.position_x[i], a.position_y[i], a.position_z[i]};
+            },
+            store_one);
       }
       return;
     }
     if constexpr (has_interpolation) {
       if (real_equal(alpha, R(0))) {
-        output_loop<Scattered>(first, last, [&](std::size_t i) {
-          return Vector3<E>{a.previous_position_x[i], a.previous_position_y[i],
-                            a.previous_position_z[i]};
-        }, store_one);
+        output_loop<Scattered>(
+            first, last,
+            [&](std::size_t i) {
+              return Vector3<E>{a.previous_position_x[i], a.previous_position_y[i],
+                                a.previous_position_z[i]};
+            },
+            store_one);
         return;
       }
       const E fraction = static_cast<E>(alpha);
-      output_loop<Scattered>(first, last, [&](std::size_t i) {
-        const E px = a.previous_position_x[i];
-        const E py = a.previous_position_y[i];
-        const E pz = a.previous_position_z[i];
-        return Vector3<E>{px + (a.position_x[i] - px) * fraction,
-                          py + (a.position_y[i] - py) * fraction,
-                          pz + (a.position_z[i] - pz) * fraction};
-      }, store_one);
+      output_loop<Scattered>(
+          first, last,
+          [&](std::size_t i) {
+            const E px = a.previous_position_x[i];
+            const E py = a.previous_position_y[i];
+            const E pz = a.previous_position_z[i];
+            return Vector3<E>{px + (a.position_x[i] - px) * fraction,
+                              py + (a.position_y[i] - py) * fraction,
+                              pz + (a.position_z[i] - pz) * fraction};
+          },
+          store_one);
     }
   }
   template <class T>

@@ -109,8 +109,7 @@ constexpr bool check_non_negative(const char* function, const char* argument, R 
 /// check_non_negative(function, argument, value) (>= 0 and finite), and on success
 /// `member = value`: the body of a generator's setter for a non-negative parameter.
 template <Real R>
-constexpr bool assign_non_negative(const char* function, const char* argument, R value,
-                                   R& member) {
+constexpr bool assign_non_negative(const char* function, const char* argument, R value, R& member) {
   if (!check_non_negative(function, argument, value)) return false;
   member = value;
   return true;
@@ -182,10 +181,8 @@ constexpr bool check_buffer(const char* function, const char* argument, std::siz
   return false;
 }
 
-[[gnu::cold]] [[gnu::noinline]] inline void report_span(const char* function,
-                                                        const char* argument,
-                                                        std::size_t span_size,
-                                                        std::size_t size) {
+[[gnu::cold]] [[gnu::noinline]] inline void report_span(const char* function, const char* argument,
+                                                        std::size_t span_size, std::size_t size) {
   ContractViolation violation{function,
                               argument,
                               "at least size() elements long (size() is the length of the "
@@ -224,7 +221,9 @@ constexpr bool check_at_least(const char* function, const char* argument, I valu
                               std::type_identity_t<I> least) {
   if (value >= least) return true;
   report_scalar(function, argument,
-                least == 1 ? ">= 1" : least == 3 ? ">= 3 (x, y and z)" : ">= the least allowed",
+                least == 1   ? ">= 1"
+                : least == 3 ? ">= 3 (x, y and z)"
+                             : ">= the least allowed",
                 value);
   return false;
 }

@@ -60,13 +60,12 @@ constexpr Vector3<T> as_quantities(const Vector3<R>& v) {
 template <class Particle, Real R>
 constexpr void launch(Particle& particle, const BallisticShot<R>& shot) {
   using P = Particle;
-  particle.set_position(
-      detail::as_quantities<typename P::position_type, P>(ballistic_origin<R>));
+  particle.set_position(detail::as_quantities<typename P::position_type, P>(ballistic_origin<R>));
   particle.set_velocity(detail::as_quantities<typename P::velocity_type, P>(shot.velocity));
   particle.set_acceleration(
       detail::as_quantities<typename P::acceleration_type, P>(shot.acceleration));
-  particle.set_mass(P::quantities::template make<typename P::mass_type>(
-      typename P::real(shot.mass)));
+  particle.set_mass(
+      P::quantities::template make<typename P::mass_type>(typename P::real(shot.mass)));
   if constexpr (P::stores_damping) particle.set_damping(typename P::real(shot.damping));
 }
 

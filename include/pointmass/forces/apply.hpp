@@ -15,10 +15,10 @@
 #include <type_traits>
 
 #include "../config.hpp"
+#include "../detail/validate.hpp"
 #include "../real.hpp"
 #include "../vector3.hpp"
 #include "bodies.hpp"
-#include "../detail/validate.hpp"
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::forces {
 
@@ -100,7 +100,7 @@ constexpr void apply(const G& generator, B&& bodies,
 template <class G, class B>
   requires(!std::is_lvalue_reference_v<B> && !BodyView<B>)
 void update_force(G&, B&&, typename std::remove_cvref_t<B>::real) {
-// clang-format on
+  // clang-format on
   static_assert(sizeof(B) == 0,
                 "forces::update_force: this body is a temporary, so the force added to it would "
                 "be lost; pass the particle itself (a named object)");
@@ -109,7 +109,7 @@ void update_force(G&, B&&, typename std::remove_cvref_t<B>::real) {
 template <class G, class B>
   requires(!std::is_lvalue_reference_v<B> && !BodyView<B>)
 void apply(const G&, B&&, typename std::remove_cvref_t<B>::real) {
-// clang-format on
+  // clang-format on
   static_assert(sizeof(B) == 0,
                 "forces::apply: these bodies are a temporary, so the forces added to them would "
                 "be lost; pass the system itself (a named object)");

@@ -153,7 +153,7 @@ concept WideBody = requires(B& b, const B& cb, const Vector3<typename B::positio
   requires !std::same_as<typename B::position_type, typename B::real>;
   {
     cb.template position_relative_to<typename B::real>(origin)
-  } -> std::same_as<Vector3<typename B::real>>;
+    } -> std::same_as<Vector3<typename B::real>>;
   { cb.velocity() } -> std::same_as<Vector3<typename B::real>>;
   { cb.inverse_mass() } -> std::same_as<typename B::real>;
   { cb.has_finite_mass() } -> std::same_as<bool>;
@@ -169,7 +169,7 @@ concept WideBodies = requires(B& b, const B& cb, std::size_t i,
   { cb.size() } -> std::convertible_to<std::size_t>;
   {
     cb.template position_relative_to<typename B::real>(i, origin)
-  } -> std::same_as<Vector3<typename B::real>>;
+    } -> std::same_as<Vector3<typename B::real>>;
   { cb.velocity(i) } -> std::same_as<Vector3<typename B::real>>;
   { cb.inverse_mass(i) } -> std::same_as<typename B::real>;
   b.add_force(i, Vector3<typename B::real>{});

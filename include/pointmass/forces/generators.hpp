@@ -15,10 +15,10 @@
 #include <type_traits>
 
 #include "../config.hpp"
+#include "../detail/validate.hpp"
 #include "../real.hpp"
 #include "../vector3.hpp"
 #include "bodies.hpp"
-#include "../detail/validate.hpp"
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::forces {
 
@@ -72,8 +72,7 @@ class Gravity {
   constexpr Gravity() noexcept = default;
   /// A rejected `g` leaves the generator inert (g = 0), not at the default's Earth gravity.
   constexpr explicit Gravity(const Vector3<R>& g) {
-    g_ = pointmass::detail::check_finite("Gravity::set_gravity", "gravity", g) ? g
-                                                                                : Vector3<R>{};
+    g_ = pointmass::detail::check_finite("Gravity::set_gravity", "gravity", g) ? g : Vector3<R>{};
   }
 
   constexpr Vector3<R> gravity() const noexcept { return g_; }
@@ -228,9 +227,8 @@ class BasicSpring : public SpringParameters<typename Body::real, IsBungee> {
   /// bind to it. A wrapper that refers to a body elsewhere (std::ref) is not one.
   template <class Other>
   static constexpr bool temporary_other =
-      !std::is_lvalue_reference_v<Other> &&
-      (std::is_same_v<std::remove_cvref_t<Other>, Body> ||
-       std::is_base_of_v<Body, std::remove_cvref_t<Other>>);
+      !std::is_lvalue_reference_v<Other> && (std::is_same_v<std::remove_cvref_t<Other>, Body> ||
+                                             std::is_base_of_v<Body, std::remove_cvref_t<Other>>);
 
  public:
   using real = typename Body::real;
@@ -318,10 +316,12 @@ class Buoyancy {
     }
   }
   constexpr void set_volume(R volume) {
-    if (pointmass::detail::check_positive("Buoyancy::set_volume", "volume", volume)) volume_ = volume;
+    if (pointmass::detail::check_positive("Buoyancy::set_volume", "volume", volume))
+      volume_ = volume;
   }
   constexpr void set_water_height(R water_height) {
-    if (pointmass::detail::check_finite("Buoyancy::set_water_height", "water_height", water_height)) {
+    if (pointmass::detail::check_finite("Buoyancy::set_water_height", "water_height",
+                                        water_height)) {
       water_height_ = water_height;
     }
   }
@@ -428,7 +428,7 @@ template <class B, bool IsBungee>
 constexpr void apply_links(
     const BasicLinkSprings<typename std::remove_cvref_t<B>::real, IsBungee>& springs,
     std::span<const Link> links, B&& bodies) {
-// clang-format on
+  // clang-format on
   apply_links(springs, links, bodies);
 }
 

@@ -15,10 +15,10 @@
 
 #include "../config.hpp"
 #include "../detail/exponential.hpp"
+#include "../detail/validate.hpp"
 #include "../real.hpp"
 #include "../vector3.hpp"
 #include "bodies.hpp"
-#include "../detail/validate.hpp"
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::forces {
 
@@ -157,13 +157,12 @@ constexpr PushResponse<R> push_response(R w0_squared, R gamma, R t) noexcept {
     const R r = w0 / gamma;
     const R root = real_sqrt((R(1) - r) * (R(1) + r));
     const R s = a * r / (R(1) + root);  // slow t
-    const R l = b * root;                // lambda t
+    const R l = b * root;               // lambda t
     if (l >= R(0.5) && s < R(1)) {
       const R f = s + R(2) * l;  // fast t
       const auto g = [](R x) { return x > R(0) ? -real_expm1(-x) / x : R(1); };
       const auto h = [](R x) {  // below 1/2 the series, phi_2(-x): the difference cancels
-        return x < R(0.5) ? pointmass::detail::phi_series<2>(-x)
-                          : ((x + real_expm1(-x)) / x) / x;
+        return x < R(0.5) ? pointmass::detail::phi_series<2>(-x) : ((x + real_expm1(-x)) / x) / x;
       };
       const R two_l = R(2) * l;
       return {-real_exp(-s) * real_expm1(-two_l) / two_l, (g(s) - g(f)) / two_l,
@@ -172,8 +171,8 @@ constexpr PushResponse<R> push_response(R w0_squared, R gamma, R t) noexcept {
   }
   // Here a^2 >= 2 (a > 2; or over-damped with lambda t < 1/2 and b > 2, so a > 1.9; or
   // S >= 1, so a^2 = S F >= S (S + 1)): x(t) from (1, 0) and from (0, 1) in one call.
-  const OscillatorState<R> unit = oscillate(w0_squared, gamma, Vector3<R>{R(1), R(0), R(0)},
-                                            Vector3<R>{R(0), R(1), R(0)}, t);
+  const OscillatorState<R> unit =
+      oscillate(w0_squared, gamma, Vector3<R>{R(1), R(0), R(0)}, Vector3<R>{R(0), R(1), R(0)}, t);
   const R a_squared = w0_squared * t * t;
   const R psi_over_t = unit.position.y / t;
   const R q = (R(1) - unit.position.x) / a_squared;
@@ -225,25 +224,28 @@ class StiffSpringParameters {
   constexpr R stiffness() const noexcept { return k_; }
   constexpr R damping() const noexcept { return c_; }
   constexpr void set_anchor(const Vector3<R>& anchor) {
-    if (pointmass::detail::check_finite("StiffSpring::set_anchor", "anchor", anchor)) anchor_ = anchor;
+    if (pointmass::detail::check_finite("StiffSpring::set_anchor", "anchor", anchor))
+      anchor_ = anchor;
   }
   constexpr void set_stiffness(R stiffness) {
-    if (pointmass::detail::check_non_negative("StiffSpring::set_stiffness", "stiffness", stiffness)) {
+    if (pointmass::detail::check_non_negative("StiffSpring::set_stiffness", "stiffness",
+                                              stiffness)) {
       k_ = stiffness;
     }
   }
   /// The damping coefficient c >= 0 (force -c v, in N s/m).
   constexpr void set_damping(R damping) {
-    if (pointmass::detail::check_non_negative("StiffSpring::set_damping", "damping", damping)) c_ = damping;
+    if (pointmass::detail::check_non_negative("StiffSpring::set_damping", "damping", damping))
+      c_ = damping;
   }
 
   /// The exact state, relative to the world, after `duration` of this spring alone, for a
   /// body of inverse mass `inverse_mass` > 0. Range: k / m and c / m finite, and
   /// damped_oscillator's.
-  constexpr OscillatorState<R> exact_state(const Vector3<R>& p, const Vector3<R>& v,
-                                           R inverse_mass, R duration) const noexcept {
-    OscillatorState<R> s = detail::oscillate(k_ * inverse_mass, c_ * inverse_mass / R(2),
-                                             p - anchor_, v, duration);
+  constexpr OscillatorState<R> exact_state(const Vector3<R>& p, const Vector3<R>& v, R inverse_mass,
+                                           R duration) const noexcept {
+    OscillatorState<R> s =
+        detail::oscillate(k_ * inverse_mass, c_ * inverse_mass / R(2), p - anchor_, v, duration);
     s.position += anchor_;
     return s;
   }

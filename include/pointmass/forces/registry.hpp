@@ -23,7 +23,9 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE::forces {
 
 /// What a registry can hold for particles of type P.
 template <class G, class P>
-concept GeneratorFor = requires(G& g, P& p, typename P::real t) { forces::update_force(g, p, t); };
+concept GeneratorFor = requires(G& g, P& p, typename P::real t) {
+  forces::update_force(g, p, t);
+};
 
 /// (particle, generator) pairs, like the reference engine's registry; `update_forces(t)` adds
 /// every generator's force to its particle. Two ways to register:
@@ -47,7 +49,7 @@ concept GeneratorFor = requires(G& g, P& p, typename P::real t) { forces::update
 template <class P, class... Known>
   requires(GeneratorFor<Known, P> && ...)
 class ForceRegistry {
-// clang-format on
+  // clang-format on
  public:
   using particle_type = P;
   using real = typename P::real;
@@ -67,8 +69,9 @@ class ForceRegistry {
   /// registry, to act on `particle`; returns it.
   template <class G, class... Args>
   G& emplace(P& particle, Args&&... args) {
-    static_assert(GeneratorFor<G, P>, "ForceRegistry::emplace: G needs a force(p, v, "
-                                      "inverse_mass, t) or an update_force(particle, t) member");
+    static_assert(GeneratorFor<G, P>,
+                  "ForceRegistry::emplace: G needs a force(p, v, "
+                  "inverse_mass, t) or an update_force(particle, t) member");
     std::unique_ptr<G> owned;
     if constexpr (std::is_constructible_v<G, Args&&...>) {
       owned = std::make_unique<G>(std::forward<Args>(args)...);
@@ -83,13 +86,14 @@ class ForceRegistry {
   /// Registers `generator` (not owned: it must outlive the registration) to act on `particle`.
   template <class G>
   void add(P& particle, G& generator) {
-    static_assert(!std::is_const_v<G> || GeneratorFor<G, P> ||
-                      !GeneratorFor<std::remove_const_t<G>, P>,
-                  "ForceRegistry::add: this generator is const but its update_force member is "
-                  "not: pass a non-const generator, or make update_force a const member.");
-    static_assert(GeneratorFor<G, P> || (std::is_const_v<G> && GeneratorFor<std::remove_const_t<G>, P>),
-                  "ForceRegistry::add: a generator needs a force(p, v, inverse_mass, t) or an "
-                  "update_force(particle, t) member.");
+    static_assert(
+        !std::is_const_v<G> || GeneratorFor<G, P> || !GeneratorFor<std::remove_const_t<G>, P>,
+        "ForceRegistry::add: this generator is const but its update_force member is "
+        "not: pass a non-const generator, or make update_force a const member.");
+    static_assert(
+        GeneratorFor<G, P> || (std::is_const_v<G> && GeneratorFor<std::remove_const_t<G>, P>),
+        "ForceRegistry::add: a generator needs a force(p, v, inverse_mass, t) or an "
+        "update_force(particle, t) member.");
     insert<G>(particle, generator, nullptr);
   }
 
@@ -131,8 +135,7 @@ class ForceRegistry {
   }
 
   std::size_t size() const noexcept {
-    return std::apply([](const auto&... entries) { return (entries.size() + ... + 0u); },
-                      known_) +
+    return std::apply([](const auto&... entries) { return (entries.size() + ... + 0u); }, known_) +
            erased_.size() - removed_;
   }
   bool empty() const noexcept { return size() == 0; }

@@ -48,8 +48,7 @@ class SystemColumns : public Base {
   static constexpr std::size_t user_column_count = Layout::user_column_count;
   /// The element type of the user column tagged Tag.
   template <class Tag>
-  using user_element_t =
-      typename Layout::template user_element_t<Layout::template user_index<Tag>>;
+  using user_element_t = typename Layout::template user_element_t<Layout::template user_index<Tag>>;
   /// True when the user column tagged Tag exists.
   template <class Tag>
   static constexpr bool has_column = Layout::template user_index<Tag> < user_column_count;
@@ -62,15 +61,15 @@ class SystemColumns : public Base {
   /// index: spawn and kill keep it).
   template <Column C>
     requires(stores<C>)
-  std::span<std::conditional_t<Layout::template read_only<C>, const element_t<C>, element_t<C>>>
-  column() noexcept {
+  std::span < std::conditional_t < Layout::template read_only<C>,
+  const element_t<C>, element_t < C >>> column() noexcept {
     return {this->arrays().*(Layout::template entry<C>::member), this->size()};
   }
   // clang-format off
   template <Column C>
     requires(stores<C>)
   std::span<const element_t<C>> column() const noexcept {
-  // clang-format on
+    // clang-format on
     return {this->arrays().*(Layout::template entry<C>::member), this->size()};
   }
   // The arrays users read most, by name.
@@ -98,14 +97,13 @@ class SystemColumns : public Base {
   /// The user column tagged Tag, over the live particles.
   template <class Tag>
     requires(has_column<Tag>)
-  std::span<user_element_t<Tag>> column() noexcept {
-    return {user_pointer<Tag>(), this->size()};
-  }
+  std::span<user_element_t<Tag>> column()
+  noexcept { return {user_pointer<Tag>(), this->size()}; }
   // clang-format off
   template <class Tag>
     requires(has_column<Tag>)
   std::span<const user_element_t<Tag>> column() const noexcept {
-  // clang-format on
+    // clang-format on
     return {user_pointer<Tag>(), this->size()};
   }
   /// Particle i's value in the user column tagged Tag.
@@ -113,7 +111,7 @@ class SystemColumns : public Base {
   template <class Tag>
     requires(has_column<Tag>)
   user_element_t<Tag> column(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
-  // clang-format on
+    // clang-format on
     return this->valid_index("column", i) ? user_pointer<Tag>()[i] : user_element_t<Tag>{};
   }
   template <class Tag>

@@ -30,31 +30,24 @@ class SystemForceAccumulator : public Base {
   using R = typename Base::R;
 
  public:
-  R inverse_mass(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS)
-    requires Base::Layout::has_forces
-  {
+  R inverse_mass(std::size_t i) const
+      noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_forces {
     return this->valid_index("inverse_mass", i) ? this->arrays().inverse_mass[i] : R(0);
   }
-  Vector3<R> force_accumulator(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS)
-    requires Base::Layout::has_forces
-  {
+  Vector3<R> force_accumulator(std::size_t i) const
+      noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_forces {
     if (!this->valid_index("force_accumulator", i)) return {};
     const typename Base::Arrays& a = this->arrays();
     return Base::load(a.force_x, a.force_y, a.force_z, i);
   }
   /// mass > 0 (infinity makes the particle immovable), with 1/mass finite and normal.
-  void set_mass(std::size_t i, R mass)
-    requires Base::Layout::has_forces
-  {
-    if (detail::check_index("set_mass", i, this->size()) &&
-        detail::check_mass("set_mass", mass)) {
+  void set_mass(std::size_t i, R mass) requires Base::Layout::has_forces {
+    if (detail::check_index("set_mass", i, this->size()) && detail::check_mass("set_mass", mass)) {
       this->arrays().inverse_mass[i] = R(1) / mass;
     }
   }
   /// inverse mass 0 (immovable) or finite, normal and > 0.
-  void set_inverse_mass(std::size_t i, R inverse_mass)
-    requires Base::Layout::has_forces
-  {
+  void set_inverse_mass(std::size_t i, R inverse_mass) requires Base::Layout::has_forces {
     if (detail::check_index("set_inverse_mass", i, this->size()) &&
         detail::check_inverse_mass("set_inverse_mass", inverse_mass)) {
       this->arrays().inverse_mass[i] = inverse_mass;
@@ -63,9 +56,8 @@ class SystemForceAccumulator : public Base {
   /// Adds a force to particle i for the next step only. As Particle::add_force: a hot-path
   /// call, so its preconditions (i < size(), a finite force) are checked when
   /// POINTMASS_CHECKS is on.
-  void add_force(std::size_t i, const Vector3<R>& force) noexcept(!POINTMASS_HOST_CHECKS)
-    requires Base::Layout::has_forces
-  {
+  void add_force(std::size_t i, const Vector3<R>& force) noexcept(
+      !POINTMASS_HOST_CHECKS) requires Base::Layout::has_forces {
 #if POINTMASS_HOST_CHECKS
     if (!detail::check_index("add_force", i, this->size()) ||
         !detail::check_finite("add_force", "force", force)) {

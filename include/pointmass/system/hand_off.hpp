@@ -45,7 +45,7 @@ class SystemHandOff : public Base {
   template <class T>
     requires(std::floating_point<T>)
   void copy_positions(std::span<T> out, std::size_t stride = 3) const {
-  // clang-format on
+    // clang-format on
     this->copy_strided("copy_positions", R(1), out, stride);
   }
   /// Copies the positions into vectors with x, y, z members (glm::vec3, ...): out[i] for
@@ -55,7 +55,7 @@ class SystemHandOff : public Base {
     requires(!std::is_arithmetic_v<V> && requires(V& v) { v.x = v.y = v.z; } &&
              std::floating_point<std::remove_cvref_t<decltype(std::declval<V&>().x)>>)
   void copy_positions(std::span<V> out) const {
-  // clang-format on
+    // clang-format on
     this->copy_vectors("copy_positions", R(1), out);
   }
   /// Particle i's position relative to `origin` (a camera), as float: from the whole

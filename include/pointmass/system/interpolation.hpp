@@ -37,9 +37,7 @@ class SystemInterpolation : public Base {
   /// Particle i's position column before the last step (its spawn or set_position position
   /// if it has not stepped since; for Compensated positions, the float part).
   Vector3<position_element> previous_position(std::size_t i) const
-      noexcept(!POINTMASS_HOST_CHECKS)
-    requires Base::Layout::has_interpolation
-  {
+      noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_interpolation {
     if (!this->valid_index("previous_position", i)) return {};
     const auto& a = this->arrays();
     return Base::load(a.previous_position_x, a.previous_position_y, a.previous_position_z, i);
@@ -47,9 +45,8 @@ class SystemInterpolation : public Base {
   /// Particle i's position at the fraction `alpha` in [0, 1] of the last step: alpha 0 gives
   /// the previous position and 1 the current one, bit for bit; between them
   /// previous + (current - previous) alpha, in the position columns' element type.
-  Vector3<position_element> interpolated_position(std::size_t i, R alpha) const
-    requires Base::Layout::has_interpolation
-  {
+  Vector3<position_element> interpolated_position(
+      std::size_t i, R alpha) const requires Base::Layout::has_interpolation {
     if (!detail::check_index("interpolated_position", i, this->size()) ||
         !detail::check_fraction("interpolated_position", "alpha", alpha)) {
       return {};
@@ -68,7 +65,7 @@ class SystemInterpolation : public Base {
   template <class T>
     requires(Base::Layout::has_interpolation && std::floating_point<T>)
   void copy_interpolated_positions(R alpha, std::span<T> out, std::size_t stride = 3) const {
-  // clang-format on
+    // clang-format on
     if (detail::check_fraction("copy_interpolated_positions", "alpha", alpha)) {
       this->copy_strided("copy_interpolated_positions", alpha, out, stride);
     }
@@ -79,7 +76,7 @@ class SystemInterpolation : public Base {
              requires(V& v) { v.x = v.y = v.z; } &&
              std::floating_point<std::remove_cvref_t<decltype(std::declval<V&>().x)>>)
   void copy_interpolated_positions(R alpha, std::span<V> out) const {
-  // clang-format on
+    // clang-format on
     if (detail::check_fraction("copy_interpolated_positions", "alpha", alpha)) {
       this->copy_vectors("copy_interpolated_positions", alpha, out);
     }

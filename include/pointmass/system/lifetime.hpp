@@ -28,23 +28,18 @@ class SystemLifetime : public Base {
   using R = typename Base::R;
 
  public:
-  R age(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS)
-    requires Base::Layout::has_lifetime
-  {
+  R age(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_lifetime {
     return this->valid_index("age", i) ? this->arrays().age[i] : R(0);
   }
-  R lifetime(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS)
-    requires Base::Layout::has_lifetime
-  {
+  R lifetime(std::size_t i) const
+      noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_lifetime {
     return this->valid_index("lifetime", i) ? this->arrays().lifetime[i] : R(0);
   }
   /// Seconds particle i lives (> 0; infinity for ever: an infinite lifetime never expires).
   /// It is removed by the step after which its age reaches this. Ages add up in R: in float
   /// a step of t stops adding to an age once the age's spacing exceeds 2 t (at 60 Hz, after
   /// 2^19 s, about 6 days), so give lifetimes beyond 2^17 s to a double system.
-  void set_lifetime(std::size_t i, R seconds)
-    requires Base::Layout::has_lifetime
-  {
+  void set_lifetime(std::size_t i, R seconds) requires Base::Layout::has_lifetime {
     if (detail::check_index("set_lifetime", i, this->size()) &&
         detail::check_lifetime("set_lifetime", seconds)) {
       this->arrays().lifetime[i] = seconds;

@@ -13,8 +13,7 @@ namespace {
 using namespace pointmass;
 
 template <class Body>
-__global__ void step_particles(Body* bodies, int count, typename Body::real duration,
-                               int steps) {
+__global__ void step_particles(Body* bodies, int count, typename Body::real duration, int steps) {
   const int i = static_cast<int>(blockIdx.x * blockDim.x + threadIdx.x);
   if (i >= count) return;
   Body body = bodies[i];
@@ -34,8 +33,7 @@ __global__ void step_system(typename System::Arrays arrays,
 
 template <class Body>
 void launch_particles(Body* bodies, int count) {
-  step_particles<Body><<<(count + 255) / 256, 256>>>(bodies, count,
-                                                     typename Body::real(1) / 60, 4);
+  step_particles<Body><<<(count + 255) / 256, 256>>>(bodies, count, typename Body::real(1) / 60, 4);
 }
 
 template <class System>
@@ -43,8 +41,8 @@ void launch_system(System& system, typename System::real duration) {
   // On a real device the arrays would be copied to device memory first; the kernel is the
   // same either way.
   const auto count = static_cast<unsigned>(system.size());
-  step_system<System><<<(count + 255) / 256, 256>>>(system.arrays(),
-                                                    system.step_parameters(duration));
+  step_system<System>
+      <<<(count + 255) / 256, 256>>>(system.arrays(), system.step_parameters(duration));
   system.finish_step();
 }
 

@@ -130,8 +130,7 @@ class Input {
         std::memcpy(&value, &bits, sizeof value);
         return value;
       }
-      case 2:
-        return special[byte() % (sizeof special / sizeof special[0])];
+      case 2: return special[byte() % (sizeof special / sizeof special[0])];
       case 3:
       case 4:
       case 5:  // -512 .. 512 in steps of 1/64
@@ -139,8 +138,8 @@ class Input {
       case 6:  // [0, 1]
         return static_cast<R>(word()) / R(65535);
       default: {  // 2^-n, n up to the smallest subnormal
-        constexpr int deepest = -std::numeric_limits<R>::min_exponent +
-                                std::numeric_limits<R>::digits;
+        constexpr int deepest =
+            -std::numeric_limits<R>::min_exponent + std::numeric_limits<R>::digits;
         R value = R(1);
         for (int n = word() % (deepest + 1); n > 0; --n) value /= R(2);
         return value;
@@ -164,7 +163,7 @@ class Input {
 // --- comparisons ----------------------------------------------------------------------------
 
 template <class R>
-bool identical(R a, R b) {  // same bits exactly (or both NaN)
+bool identical(R a, R b) {                         // same bits exactly (or both NaN)
   if constexpr (std::is_same_v<R, long double>) {  // x87's 80 bits: padding is no part of it
     return (a != a && b != b) || (a == b && std::signbit(a) == std::signbit(b));
   } else {
@@ -212,7 +211,8 @@ void expect_rejected(const char* function, const char* argument, const T& value)
     const typename T::value_type components[3] = {value.x, value.y, value.z};
     for (int k = 0; k < 3; ++k) {
       const char* stop = k < 2 ? std::strstr(first, ", ") : end - 1;
-      require(stop != nullptr && reads_back(first, stop, components[k]), "vector value text:", text);
+      require(stop != nullptr && reads_back(first, stop, components[k]),
+              "vector value text:", text);
       first = stop + 2;
     }
   } else {
@@ -226,9 +226,9 @@ void expect_accepted(const char* function) {
 
 // --- bounds of finite physics ---------------------------------------------------------------
 
-constexpr double bound = 1e4;           // position, velocity, acceleration, force components
+constexpr double bound = 1e4;  // position, velocity, acceleration, force components
 constexpr double inverse_mass_bound = 1e4;
-constexpr double step_bound = 1.0;      // seconds
+constexpr double step_bound = 1.0;  // seconds
 constexpr int max_steps = 4096;
 constexpr int max_forces = 256;
 
@@ -385,8 +385,7 @@ void fuzz_particle(Input& in) {
         if (!rejected) budget.step(count == 0 ? 1 : count, static_cast<double>(t));
         break;
       }
-      default:
-        break;
+      default: break;
     }
     if (rejected) {
       require(same_state(body, before), "a rejected call changed the particle");
@@ -461,8 +460,8 @@ template <class System>
 inline constexpr bool plain_positions =
     std::is_same_v<typename System::position_value, typename System::real>;
 template <class System>
-inline constexpr bool compensated_positions = !std::is_same_v<
-    typename System::position_element, typename System::position_value>;
+inline constexpr bool compensated_positions =
+    !std::is_same_v<typename System::position_element, typename System::position_value>;
 
 /// R's largest value and the midpoint above it (between it and the next power of two), in W.
 template <class W, class R>
@@ -567,10 +566,10 @@ void check_stored_position(const System& system, std::size_t i,
     const Vector3<R> lo{expected_lo<R>(p.x), expected_lo<R>(p.y), expected_lo<R>(p.z)};
     require(identical(Vector3<R>{a.position_x[i], a.position_y[i], a.position_z[i]}, hi),
             "a compensated position's hi is not the position rounded");
-    require(identical(Vector3<R>{a.position_error_x[i], a.position_error_y[i],
-                                 a.position_error_z[i]},
-                      lo),
-            "a compensated position's lo is not the rest rounded");
+    require(
+        identical(Vector3<R>{a.position_error_x[i], a.position_error_y[i], a.position_error_z[i]},
+                  lo),
+        "a compensated position's lo is not the rest rounded");
   } else {
     require(identical(system.position(i), p), "a position was not stored as given");
   }
@@ -638,7 +637,8 @@ class Mirror {
     body.set_position(p);
     body.set_velocity(v);
     if constexpr (!System::per_particle_acceleration) body.set_acceleration(acceleration);
-    if constexpr (System::stores_damping && !System::per_particle_damping) body.set_damping(damping);
+    if constexpr (System::stores_damping && !System::per_particle_damping)
+      body.set_damping(damping);
     push(body, owner);
   }
   void kill(std::size_t i) {  // swap-remove
@@ -658,7 +658,8 @@ class Mirror {
   void note_acceleration(const Vector3<R>& a) {
     if constexpr (!System::has_forces) {
       const auto negative_zero = [](R x) { return x == R(0) && std::signbit(x); };
-      if (negative_zero(a.x) || negative_zero(a.y) || negative_zero(a.z)) zero_signs_may_differ = true;
+      if (negative_zero(a.x) || negative_zero(a.y) || negative_zero(a.z))
+        zero_signs_may_differ = true;
     }
   }
   void integrate(std::size_t i, R t) {
@@ -702,23 +703,28 @@ void compare(const System& system, const Mirror<System>& mirror, const Budget& b
   require(system.size() == mirror.size(), "system and mirror differ in size");
   require(system.arrays().size == system.size(), "arrays().size differs from size()");
   require(system.capacity() >= system.size(), "capacity below size");
-  require(system.position_x().size() == system.size() && system.velocity_z().size() == system.size(),
-          "a span's size differs from size()");
+  require(
+      system.position_x().size() == system.size() && system.velocity_z().size() == system.size(),
+      "a span's size differs from size()");
   const bool exact = !mirror.zero_signs_may_differ;
-  const auto agree = [exact](const auto& a, const auto& b) { return exact ? identical(a, b) : same(a, b); };
+  const auto agree = [exact](const auto& a, const auto& b) {
+    return exact ? identical(a, b) : same(a, b);
+  };
   for (std::size_t i = 0; i < system.size(); ++i) {
     const auto& body = mirror.bodies[i];
     const auto p = system.position(i);
     require(agree(p, body.position()), "system position differs from Particle");
     require(agree(system.velocity(i), body.velocity()), "system velocity differs from Particle");
-    require(identical(system.velocity_y()[i], system.velocity(i).y), "a span differs from the accessor");
+    require(identical(system.velocity_y()[i], system.velocity(i).y),
+            "a span differs from the accessor");
     if constexpr (plain_positions<System>) {
       require(identical(system.position_x()[i], p.x), "a span differs from the accessor");
     } else {  // the stored numbers too: the pair's hi and lo, or the wide value
       const auto& a = system.arrays();
       const auto stored = body.stored_position();
       require(agree(a.position_x[i], stored.x) && agree(a.position_y[i], stored.y) &&
-                  agree(a.position_z[i], stored.z) && identical(system.position_x()[i], a.position_x[i]),
+                  agree(a.position_z[i], stored.z) &&
+                  identical(system.position_x()[i], a.position_x[i]),
               "a system's stored position differs from Particle");
       if constexpr (compensated_positions<System>) {
         const auto error = body.stored_position_error();
@@ -768,7 +774,8 @@ void compare(const System& system, const Mirror<System>& mirror, const Budget& b
       const auto found = system.find(handle);
       const auto alive = index_of.find(serial);
       if (alive == index_of.end()) {
-        require(!found.has_value() && !system.contains(handle), "a dead particle's handle finds one");
+        require(!found.has_value() && !system.contains(handle),
+                "a dead particle's handle finds one");
       } else {
         require(found.has_value() && *found == alive->second && system.contains(handle),
                 "a handle does not find its particle");
@@ -783,9 +790,10 @@ std::size_t pick_index(Input& in, std::size_t size) {
   std::size_t index = in.byte();
   if (index >= 248) {
     constexpr std::size_t max = std::numeric_limits<std::size_t>::max();
-    constexpr std::size_t half_width = std::size_t{1} << (std::numeric_limits<std::size_t>::digits / 2);
-    const std::size_t special[] = {size, size + 1, max, max - 1, max / 2 + 1,
-                                   half_width, size + 64, 255};
+    constexpr std::size_t half_width = std::size_t{1}
+                                       << (std::numeric_limits<std::size_t>::digits / 2);
+    const std::size_t special[] = {size,        size + 1,   max,       max - 1,
+                                   max / 2 + 1, half_width, size + 64, 255};
     index = special[index - 248];
   } else if (index < 200 && size != 0) {
     index %= size;
@@ -1072,7 +1080,8 @@ void fuzz_system(Input& in) {
             expect_rejected("set_mass", "mass", m);
           } else {
             mirror.bodies[index].set_mass(m);
-            require(identical(system.inverse_mass(index), R(1) / m), "set_mass did not take effect");
+            require(identical(system.inverse_mass(index), R(1) / m),
+                    "set_mass did not take effect");
             budget.value(R(1) / m, inverse_mass_bound);
           }
         }
@@ -1164,7 +1173,8 @@ void fuzz_system(Input& in) {
             for (int k = 0; k < 3; ++k) {
               long double p = 0.0L;
               if (exact_position(system, i, k, p)) {
-                require(identical(buffer[i * stride + static_cast<std::size_t>(k)], static_cast<float>(p)),
+                require(identical(buffer[i * stride + static_cast<std::size_t>(k)],
+                                  static_cast<float>(p)),
                         "copy-out differs from the positions");
               }
             }
@@ -1183,7 +1193,8 @@ void fuzz_system(Input& in) {
           }
           mirror.step(t);
         }
-        if (real_isfinite(t) && t >= R(0)) budget.step(count == 0 ? 1 : count, static_cast<double>(t));
+        if (real_isfinite(t) && t >= R(0))
+          budget.step(count == 0 ? 1 : count, static_cast<double>(t));
         stepped = true;
         break;
       }
@@ -1193,7 +1204,8 @@ void fuzz_system(Input& in) {
         if (count <= reserve_limit) {
           system.reserve(count);
           require(system.capacity() >= count, "reserve left too little room");
-          if (count <= capacity) require(system.capacity() == capacity, "a reserve within capacity changed it");
+          if (count <= capacity)
+            require(system.capacity() == capacity, "a reserve within capacity changed it");
         } else if (count > System::max_size()) {
 #if POINTMASS_HAS_EXCEPTIONS
           std::string message;
@@ -1350,8 +1362,8 @@ void fuzz_system(Input& in) {
           const std::size_t end = pick_bound(in, system.size());
           const bool backward = in.byte() % 2 == 1;
           const char* function = backward ? "step_range_backward" : "step_range";
-          (backward ? System::step_range_backward : System::step_range)(system.arrays(), begin,
-                                                                         end, parameters);
+          (backward ? System::step_range_backward : System::step_range)(system.arrays(), begin, end,
+                                                                        parameters);
           if (end > system.size()) {
             expect_rejected(function, "end", end);
           } else if (begin > end) {
@@ -1411,8 +1423,7 @@ void fuzz_system(Input& in) {
         }
         break;
       }
-      default:
-        break;
+      default: break;
     }
     expect_accepted("system operation");
     if (stepped) {
@@ -1481,7 +1492,9 @@ void fuzz_generator_setter(Input& in, Generators<R>& g) {
   const auto positive = [](R x) { return real_isfinite(x) && x > R(0); };
   const auto finite_number = [](R x) { return real_isfinite(x); };
   const auto finite_vector = [](const Vector3<R>& v) { return is_finite(v); };
-  const auto spring_state = [](const auto& s) { return std::tuple(s.stiffness(), s.rest_length()); };
+  const auto spring_state = [](const auto& s) {
+    return std::tuple(s.stiffness(), s.rest_length());
+  };
   const auto stiff_state = [](const auto& s) {
     return std::tuple(s.anchor(), s.stiffness(), s.damping());
   };
@@ -1492,17 +1505,19 @@ void fuzz_generator_setter(Input& in, Generators<R>& g) {
   switch (in.byte() % 16) {
     case 0: {
       const auto v = in.vector<R>();
-      fuzz_setter(v, finite_vector(v), "Gravity::set_gravity", "gravity",
-                  [&](const auto& x) { g.gravity.set_gravity(x); }, [&] { return g.gravity.gravity(); });
+      fuzz_setter(
+          v, finite_vector(v), "Gravity::set_gravity", "gravity",
+          [&](const auto& x) { g.gravity.set_gravity(x); }, [&] { return g.gravity.gravity(); });
       break;
     }
     case 1:
     case 2: {
       const R x = in.number<R>();
       const bool first = in.byte() % 2 == 0;
-      fuzz_setter(x, non_negative(x), first ? "Drag::set_k1" : "Drag::set_k2", first ? "k1" : "k2",
-                  [&](R y) { first ? g.drag.set_k1(y) : g.drag.set_k2(y); },
-                  [&] { return std::tuple(g.drag.k1(), g.drag.k2()); });
+      fuzz_setter(
+          x, non_negative(x), first ? "Drag::set_k1" : "Drag::set_k2", first ? "k1" : "k2",
+          [&](R y) { first ? g.drag.set_k1(y) : g.drag.set_k2(y); },
+          [&] { return std::tuple(g.drag.k1(), g.drag.k2()); });
       break;
     }
     case 3:
@@ -1510,10 +1525,11 @@ void fuzz_generator_setter(Input& in, Generators<R>& g) {
       const R x = in.number<R>();
       const bool stiffness = in.byte() % 2 == 0;
       auto set = [&](auto& s) {
-        fuzz_setter(x, non_negative(x), stiffness ? "set_stiffness" : "set_rest_length",
-                    stiffness ? "stiffness" : "rest_length",
-                    [&](R y) { stiffness ? s.set_stiffness(y) : s.set_rest_length(y); },
-                    [&] { return spring_state(s); });
+        fuzz_setter(
+            x, non_negative(x), stiffness ? "set_stiffness" : "set_rest_length",
+            stiffness ? "stiffness" : "rest_length",
+            [&](R y) { stiffness ? s.set_stiffness(y) : s.set_rest_length(y); },
+            [&] { return spring_state(s); });
       };
       switch (in.byte() % 3) {
         case 0: set(g.spring); break;
@@ -1525,8 +1541,9 @@ void fuzz_generator_setter(Input& in, Generators<R>& g) {
     case 5: {
       const auto v = in.vector<R>();
       auto set = [&](auto& s) {
-        fuzz_setter(v, finite_vector(v), "set_anchor", "anchor",
-                    [&](const auto& x) { s.set_anchor(x); }, [&] { return s.anchor(); });
+        fuzz_setter(
+            v, finite_vector(v), "set_anchor", "anchor", [&](const auto& x) { s.set_anchor(x); },
+            [&] { return s.anchor(); });
       };
       if (in.byte() % 2 == 0) set(g.spring);
       else set(g.bungee);
@@ -1538,24 +1555,29 @@ void fuzz_generator_setter(Input& in, Generators<R>& g) {
       const R x = in.number<R>();
       switch (in.byte() % 5) {
         case 0:
-          fuzz_setter(x, positive(x), "Buoyancy::set_max_depth", "max_depth",
-                      [&](R y) { g.buoyancy.set_max_depth(y); }, buoyancy_state);
+          fuzz_setter(
+              x, positive(x), "Buoyancy::set_max_depth", "max_depth",
+              [&](R y) { g.buoyancy.set_max_depth(y); }, buoyancy_state);
           break;
         case 1:
-          fuzz_setter(x, positive(x), "Buoyancy::set_volume", "volume",
-                      [&](R y) { g.buoyancy.set_volume(y); }, buoyancy_state);
+          fuzz_setter(
+              x, positive(x), "Buoyancy::set_volume", "volume",
+              [&](R y) { g.buoyancy.set_volume(y); }, buoyancy_state);
           break;
         case 2:
-          fuzz_setter(x, finite_number(x), "Buoyancy::set_water_height", "water_height",
-                      [&](R y) { g.buoyancy.set_water_height(y); }, buoyancy_state);
+          fuzz_setter(
+              x, finite_number(x), "Buoyancy::set_water_height", "water_height",
+              [&](R y) { g.buoyancy.set_water_height(y); }, buoyancy_state);
           break;
         case 3:
-          fuzz_setter(x, non_negative(x), "Buoyancy::set_liquid_density", "liquid_density",
-                      [&](R y) { g.buoyancy.set_liquid_density(y); }, buoyancy_state);
+          fuzz_setter(
+              x, non_negative(x), "Buoyancy::set_liquid_density", "liquid_density",
+              [&](R y) { g.buoyancy.set_liquid_density(y); }, buoyancy_state);
           break;
         default:
-          fuzz_setter(x, non_negative(x), "Buoyancy::set_gravity", "g",
-                      [&](R y) { g.buoyancy.set_gravity(y); }, buoyancy_state);
+          fuzz_setter(
+              x, non_negative(x), "Buoyancy::set_gravity", "g",
+              [&](R y) { g.buoyancy.set_gravity(y); }, buoyancy_state);
           break;
       }
       break;
@@ -1565,20 +1587,23 @@ void fuzz_generator_setter(Input& in, Generators<R>& g) {
         switch (in.byte() % 3) {
           case 0: {
             const auto v = in.vector<R>();
-            fuzz_setter(v, finite_vector(v), "StiffSpring::set_anchor", "anchor",
-                        [&](const auto& y) { s.set_anchor(y); }, [&] { return stiff_state(s); });
+            fuzz_setter(
+                v, finite_vector(v), "StiffSpring::set_anchor", "anchor",
+                [&](const auto& y) { s.set_anchor(y); }, [&] { return stiff_state(s); });
             break;
           }
           case 1: {
             const R x = in.number<R>();
-            fuzz_setter(x, non_negative(x), "StiffSpring::set_stiffness", "stiffness",
-                        [&](R y) { s.set_stiffness(y); }, [&] { return stiff_state(s); });
+            fuzz_setter(
+                x, non_negative(x), "StiffSpring::set_stiffness", "stiffness",
+                [&](R y) { s.set_stiffness(y); }, [&] { return stiff_state(s); });
             break;
           }
           default: {
             const R x = in.number<R>();
-            fuzz_setter(x, non_negative(x), "StiffSpring::set_damping", "damping",
-                        [&](R y) { s.set_damping(y); }, [&] { return stiff_state(s); });
+            fuzz_setter(
+                x, non_negative(x), "StiffSpring::set_damping", "damping",
+                [&](R y) { s.set_damping(y); }, [&] { return stiff_state(s); });
             break;
           }
         }
@@ -1651,10 +1676,10 @@ void fuzz_bodies(Input& in, const Generators<R>& g) {
                     box(g.buoyancy.max_depth(), g.buoyancy.volume(), g.buoyancy.water_height(),
                         g.buoyancy.liquid_density(), g.buoyancy.gravity()),
                     "Buoyancy");
-  fuzz_update_force(g.position_only, body, duration,
-                    box(g.position_only.anchor(), g.position_only.stiffness(),
-                        g.position_only.damping()),
-                    "PositionOnlyStiffSpring");
+  fuzz_update_force(
+      g.position_only, body, duration,
+      box(g.position_only.anchor(), g.position_only.stiffness(), g.position_only.damping()),
+      "PositionOnlyStiffSpring");
   // The closed-form step: a finite state, or reported and nothing changed.
   Body stepped = body;
   g.stiff.advance(stepped, duration);
@@ -1689,7 +1714,8 @@ void fuzz_links(Input& in, const Generators<R>& g) {
               "apply_links accepted a non-finite force");
     }
   } else {
-    for (const auto& f : accumulated) require(f == Vector3<R>{}, "a rejected apply_links changed a body");
+    for (const auto& f : accumulated)
+      require(f == Vector3<R>{}, "a rejected apply_links changed a body");
     report = {};
   }
 }
@@ -1720,69 +1746,71 @@ struct SystemConfig {
 };
 
 template <class R>
-using ParticleConfigs = std::tuple<
-    ParticleConfig<R, damping::None, position::Euler>,
-    ParticleConfig<R, damping::None, position::Kinematic>,
-    ParticleConfig<R, damping::None, position::SemiImplicit>,
-    ParticleConfig<R, damping::None, position::Exact>,
-    ParticleConfig<R, damping::PerFrame, position::Euler>,
-    ParticleConfig<R, damping::PerFrame, position::Kinematic>,
-    ParticleConfig<R, damping::PerFrame, position::SemiImplicit>,
-    ParticleConfig<R, damping::PerSecond, position::Euler>,
-    ParticleConfig<R, damping::PerSecond, position::Kinematic>,
-    ParticleConfig<R, damping::PerSecond, position::SemiImplicit>,
-    ParticleConfig<R, damping::AccelerateThenDamp, position::Euler>,
-    ParticleConfig<R, damping::AccelerateThenDamp, position::Kinematic>,
-    ParticleConfig<R, damping::AccelerateThenDamp, position::SemiImplicit>,
-    ParticleConfig<R, damping::Exact, position::Euler>,
-    ParticleConfig<R, damping::Exact, position::Kinematic>,
-    ParticleConfig<R, damping::Exact, position::SemiImplicit>,
-    ParticleConfig<R, damping::Exact, position::Exact>>;
+using ParticleConfigs =
+    std::tuple<ParticleConfig<R, damping::None, position::Euler>,
+               ParticleConfig<R, damping::None, position::Kinematic>,
+               ParticleConfig<R, damping::None, position::SemiImplicit>,
+               ParticleConfig<R, damping::None, position::Exact>,
+               ParticleConfig<R, damping::PerFrame, position::Euler>,
+               ParticleConfig<R, damping::PerFrame, position::Kinematic>,
+               ParticleConfig<R, damping::PerFrame, position::SemiImplicit>,
+               ParticleConfig<R, damping::PerSecond, position::Euler>,
+               ParticleConfig<R, damping::PerSecond, position::Kinematic>,
+               ParticleConfig<R, damping::PerSecond, position::SemiImplicit>,
+               ParticleConfig<R, damping::AccelerateThenDamp, position::Euler>,
+               ParticleConfig<R, damping::AccelerateThenDamp, position::Kinematic>,
+               ParticleConfig<R, damping::AccelerateThenDamp, position::SemiImplicit>,
+               ParticleConfig<R, damping::Exact, position::Euler>,
+               ParticleConfig<R, damping::Exact, position::Kinematic>,
+               ParticleConfig<R, damping::Exact, position::SemiImplicit>,
+               ParticleConfig<R, damping::Exact, position::Exact>>;
 
 template <class R>
 using SystemConfigs = std::tuple<
     SystemConfig<ParticleSystem<R>>,
-    SystemConfig<ParticleSystem<R, damping::None, position::Exact,
-                                 features::PerParticleAcceleration>>,
-    SystemConfig<ParticleSystem<R, damping::PerFrame, position::SemiImplicit, features::ForceAccumulator>>,
+    SystemConfig<
+        ParticleSystem<R, damping::None, position::Exact, features::PerParticleAcceleration>>,
+    SystemConfig<
+        ParticleSystem<R, damping::PerFrame, position::SemiImplicit, features::ForceAccumulator>>,
     SystemConfig<ParticleSystem<R, damping::AccelerateThenDamp, position::Kinematic,
-                                 features::PerParticleDamping, features::Lifetime>>,
+                                features::PerParticleDamping, features::Lifetime>>,
     SystemConfig<ParticleSystem<R, damping::Exact, position::Exact, features::PerParticleDamping,
-                                 features::PerParticleAcceleration, features::ForceAccumulator,
-                                 features::Lifetime>>,
-    SystemConfig<ParticleSystem<R, damping::PerSecond, position::SemiImplicit, features::ForceAccumulator,
-                                 features::Lifetime>>>;
+                                features::PerParticleAcceleration, features::ForceAccumulator,
+                                features::Lifetime>>,
+    SystemConfig<ParticleSystem<R, damping::PerSecond, position::SemiImplicit,
+                                features::ForceAccumulator, features::Lifetime>>>;
 
 // More feature sets and policy pairs, after the others so that the first byte of the
 // corpus's older inputs still chooses the configuration it chose.
 template <class R>
 using MoreSystemConfigs = std::tuple<
     SystemConfig<ParticleSystem<R, damping::PerFrame, position::Euler, features::PerParticleDamping,
-                                 features::ForceAccumulator>>,
+                                features::ForceAccumulator>>,
     SystemConfig<ParticleSystem<R, damping::Exact, position::SemiImplicit,
-                                 features::PerParticleAcceleration, features::Lifetime>>,
+                                features::PerParticleAcceleration, features::Lifetime>>,
     SystemConfig<ParticleSystem<R, damping::PerSecond, position::Kinematic, features::Lifetime,
-                                 features::PerParticleDamping, features::PerParticleAcceleration>>,
+                                features::PerParticleDamping, features::PerParticleAcceleration>>,
     SystemConfig<ParticleSystem<R, damping::None, position::Euler, features::ForceAccumulator,
-                                 features::Lifetime>>>;
+                                features::Lifetime>>>;
 
 // The game features (previous positions, handles, a user column): no physics of their own,
 // so every invariant above holds with them; after the others, as above.
 template <class R>
-using GameSystemConfigs = std::tuple<
-    SystemConfig<ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
-                                 features::Interpolation, features::Handles,
-                                 features::Column<FuzzOwner, int>>>>;
+using GameSystemConfigs = std::tuple<SystemConfig<
+    ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
+                   features::Interpolation, features::Handles, features::Column<FuzzOwner, int>>>>;
 
 template <class... A, class... B>
 auto concatenate(std::tuple<A...>, std::tuple<B...>) -> std::tuple<A..., B...>;
-using Configs = decltype(concatenate(
-    concatenate(
-        concatenate(std::declval<ParticleConfigs<float>>(), std::declval<ParticleConfigs<double>>()),
-        concatenate(std::declval<SystemConfigs<float>>(), std::declval<SystemConfigs<double>>())),
-    concatenate(
-        concatenate(std::declval<MoreSystemConfigs<float>>(), std::declval<MoreSystemConfigs<double>>()),
-        concatenate(std::declval<GameSystemConfigs<float>>(), std::declval<GameSystemConfigs<double>>()))));
+using Configs =
+    decltype(concatenate(concatenate(concatenate(std::declval<ParticleConfigs<float>>(),
+                                                 std::declval<ParticleConfigs<double>>()),
+                                     concatenate(std::declval<SystemConfigs<float>>(),
+                                                 std::declval<SystemConfigs<double>>())),
+                         concatenate(concatenate(std::declval<MoreSystemConfigs<float>>(),
+                                                 std::declval<MoreSystemConfigs<double>>()),
+                                     concatenate(std::declval<GameSystemConfigs<float>>(),
+                                                 std::declval<GameSystemConfigs<double>>()))));
 static_assert(std::tuple_size_v<Configs> <= 0xE0,
               "the first bytes from 0xE0 choose wide positions and the forces");
 
@@ -1791,15 +1819,18 @@ static_assert(std::tuple_size_v<Configs> <= 0xE0,
 // inputs keep their configuration.
 using WideConfigs = std::tuple<
     SystemConfig<ParticleSystem<Precision<float, double>>>,
-    SystemConfig<ParticleSystem<Precision<float, Compensated<float>>, damping::Exact, position::Exact,
-                                 features::PerParticleDamping, features::PerParticleAcceleration,
-                                 features::ForceAccumulator, features::Lifetime>>,
+    SystemConfig<
+        ParticleSystem<Precision<float, Compensated<float>>, damping::Exact, position::Exact,
+                       features::PerParticleDamping, features::PerParticleAcceleration,
+                       features::ForceAccumulator, features::Lifetime>>,
     SystemConfig<ParticleSystem<Precision<float, Compensated<float>>, damping::AccelerateThenDamp,
-                                 position::SemiImplicit, features::ForceAccumulator>>,
-    SystemConfig<ParticleSystem<Precision<double, Compensated<double>>, damping::PerFrame,
-                                 position::Kinematic, features::PerParticleDamping, features::Lifetime>>,
-    SystemConfig<ParticleSystem<Precision<float, double>, damping::PerSecond, position::SemiImplicit,
-                                 features::Lifetime, features::Interpolation, features::Handles>>>;
+                                position::SemiImplicit, features::ForceAccumulator>>,
+    SystemConfig<
+        ParticleSystem<Precision<double, Compensated<double>>, damping::PerFrame,
+                       position::Kinematic, features::PerParticleDamping, features::Lifetime>>,
+    SystemConfig<
+        ParticleSystem<Precision<float, double>, damping::PerSecond, position::SemiImplicit,
+                       features::Lifetime, features::Interpolation, features::Handles>>>;
 
 template <class Tuple, std::size_t... I>
 void dispatch(std::size_t which, Input& in, std::index_sequence<I...>) {
