@@ -64,7 +64,7 @@ class StoredDamping {
  public:
   constexpr StoredDamping() noexcept = default;
   POINTMASS_HD constexpr explicit StoredDamping(R d) noexcept : value_(d) {}
-  POINTMASS_HD constexpr R value() const noexcept { return value_; }
+  [[nodiscard]] POINTMASS_HD constexpr R value() const noexcept { return value_; }
 
  private:
   R value_ = R(1);
@@ -81,11 +81,13 @@ class LogDamping {
   /// d and split_log(d), computed before (a ParticleSystem stores them in separate columns).
   POINTMASS_HD constexpr LogDamping(R d, const detail::SplitLog<R>& log) noexcept
       : value_(d), log_(log) {}
-  POINTMASS_HD constexpr R value() const noexcept { return value_; }
+  [[nodiscard]] POINTMASS_HD constexpr R value() const noexcept { return value_; }
   /// ln d as hi + lo (detail::split_log): both 0 for d = 1, a huge negative hi for d = 0.
-  POINTMASS_HD constexpr const detail::SplitLog<R>& split_log() const noexcept { return log_; }
+  [[nodiscard]] POINTMASS_HD constexpr const detail::SplitLog<R>& split_log() const noexcept {
+    return log_;
+  }
   /// k = ln d, the damping rate per second (<= 0; -infinity for d = 0).
-  POINTMASS_HD constexpr R log_value() const noexcept {
+  [[nodiscard]] POINTMASS_HD constexpr R log_value() const noexcept {
     return value_ > R(0) ? log_.hi + log_.lo : -real_infinity<R>;
   }
 

@@ -188,6 +188,7 @@ struct UserColumnSizes<std::tuple<Columns...>> {
 /// The index of the user column tagged Tag in Columns (the count when there is none).
 template <class Tag, class Columns, std::size_t I = 0>
 constexpr std::size_t user_column_index() {
+  // NOLINTNEXTLINE(bugprone-branch-clone): the end of the list and a match both answer I
   if constexpr (I == std::tuple_size_v<Columns>) {
     return I;
   } else if constexpr (std::is_same_v<typename std::tuple_element_t<I, Columns>::tag, Tag>) {

@@ -34,8 +34,9 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 /// POINTMASS_CHECKS is on (as ParticleSystem::interpolated_position checks it): reported, and
 /// `current` is returned.
 template <Real R, class A>
-constexpr Vector3<R> interpolate(const Vector3<R>& previous, const Vector3<R>& current,
-                                 A alpha) noexcept(!POINTMASS_HOST_CHECKS) {
+[[nodiscard]] constexpr Vector3<R> interpolate(const Vector3<R>& previous,
+                                               const Vector3<R>& current,
+                                               A alpha) noexcept(!POINTMASS_HOST_CHECKS) {
   const R fraction = static_cast<R>(alpha);
 #if POINTMASS_HOST_CHECKS
   if (!detail::check_fraction("interpolate", "alpha", fraction)) return current;
@@ -67,10 +68,10 @@ class FixedStep {
     set_max_steps(max_steps);
   }
 
-  constexpr R step() const noexcept { return step_; }
-  constexpr int max_steps() const noexcept { return max_steps_; }
+  [[nodiscard]] constexpr R step() const noexcept { return step_; }
+  [[nodiscard]] constexpr int max_steps() const noexcept { return max_steps_; }
   /// The time accumulated and not yet stepped, in [0, step()).
-  constexpr R accumulated() const noexcept { return accumulated_; }
+  [[nodiscard]] constexpr R accumulated() const noexcept { return accumulated_; }
 
   void set_step(R step) {
     if (detail::check_positive("set_step", "step", step)) {

@@ -25,7 +25,7 @@ inline constexpr R driving_gravity = R(20);  ///< m/s^2, typical of driving game
 
 /// The acceleration of gravity g pointing down (-Y): (0, -g, 0).
 template <Real R>
-POINTMASS_HD constexpr Vector3<R> gravity(R g = earth_gravity<R>) noexcept {
+[[nodiscard]] POINTMASS_HD constexpr Vector3<R> gravity(R g = earth_gravity<R>) noexcept {
   return {R(0), -g, R(0)};
 }
 

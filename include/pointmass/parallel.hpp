@@ -66,6 +66,7 @@ class CountingIterator {
   friend difference_type operator-(CountingIterator a, CountingIterator b) noexcept {
     return static_cast<difference_type>(a.value_) - static_cast<difference_type>(b.value_);
   }
+  // NOLINTNEXTLINE(modernize-use-nullptr): a finding inside the defaulted comparison
   friend auto operator<=>(CountingIterator, CountingIterator) = default;
 
  private:

@@ -140,7 +140,7 @@ class BasicParticle {
 
   // --- state -------------------------------------------------------------------------------
 
-  POINTMASS_HD constexpr Vector3<position_type> position() const noexcept {
+  [[nodiscard]] POINTMASS_HD constexpr Vector3<position_type> position() const noexcept {
     if constexpr (Storage::compensated) {
       return typed<position_type>(
           Vector3<position_value>{Storage::value_of(position_.x, position_error_.x),
@@ -174,36 +174,38 @@ class BasicParticle {
   }
   /// The stored position's numbers: the position itself when it is stored as `real` or a
   /// wider Real, the rounded part of hi + lo for Compensated<real> (precision.hpp).
-  POINTMASS_HD constexpr Vector3<position_element> stored_position() const noexcept {
+  [[nodiscard]] POINTMASS_HD constexpr Vector3<position_element> stored_position() const noexcept {
     return position_;
   }
   /// Compensated<real> only: the error part lo of hi + lo.
-  POINTMASS_HD constexpr Vector3<real> stored_position_error()
+  [[nodiscard]] POINTMASS_HD constexpr Vector3<real> stored_position_error()
       const noexcept requires Storage::compensated {
     return position_error_;
   }
-  POINTMASS_HD constexpr Vector3<velocity_type> velocity() const noexcept {
+  [[nodiscard]] POINTMASS_HD constexpr Vector3<velocity_type> velocity() const noexcept {
     return typed<velocity_type>(velocity_);
   }
-  POINTMASS_HD constexpr Vector3<acceleration_type> acceleration() const noexcept {
+  [[nodiscard]] POINTMASS_HD constexpr Vector3<acceleration_type> acceleration() const noexcept {
     return typed<acceleration_type>(acceleration_);
   }
-  POINTMASS_HD constexpr Vector3<force_type> force_accumulator() const noexcept {
+  [[nodiscard]] POINTMASS_HD constexpr Vector3<force_type> force_accumulator() const noexcept {
     return typed<force_type>(force_accumulator_);
   }
   /// The fraction of velocity kept (per second or per frame, as the policy says); 1 for
   /// damping::None.
-  POINTMASS_HD constexpr real damping() const noexcept { return damping_.value(); }
-  POINTMASS_HD constexpr inverse_mass_type inverse_mass() const noexcept {
+  [[nodiscard]] POINTMASS_HD constexpr real damping() const noexcept { return damping_.value(); }
+  [[nodiscard]] POINTMASS_HD constexpr inverse_mass_type inverse_mass() const noexcept {
     return Q::template make<inverse_mass_type>(inverse_mass_);
   }
   /// The mass; infinity for an immovable particle (inverse mass 0).
-  POINTMASS_HD constexpr mass_type mass() const noexcept {
+  [[nodiscard]] POINTMASS_HD constexpr mass_type mass() const noexcept {
     return Q::template make<mass_type>(inverse_mass_ > real(0) ? real(1) / inverse_mass_
                                                                : real_infinity<real>);
   }
   /// False for an immovable particle (inverse mass 0).
-  POINTMASS_HD constexpr bool has_finite_mass() const noexcept { return inverse_mass_ > real(0); }
+  [[nodiscard]] POINTMASS_HD constexpr bool has_finite_mass() const noexcept {
+    return inverse_mass_ > real(0);
+  }
 
   // --- setters: always validated; a rejected value leaves the particle unchanged ------------
 

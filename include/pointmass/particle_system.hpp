@@ -156,9 +156,9 @@ class ParticleSystem
   void swap(ParticleSystem& other) noexcept { State::swap_state(other); }
   friend void swap(ParticleSystem& a, ParticleSystem& b) noexcept { a.swap(b); }
 
-  std::size_t size() const noexcept { return State::size(); }
-  bool empty() const noexcept { return size() == 0; }
-  std::size_t capacity() const noexcept { return State::capacity(); }
+  [[nodiscard]] std::size_t size() const noexcept { return State::size(); }
+  [[nodiscard]] bool empty() const noexcept { return size() == 0; }
+  [[nodiscard]] std::size_t capacity() const noexcept { return State::capacity(); }
   /// The largest capacity a system of this configuration can have.
   using State::max_size;
   /// Makes room for `capacity` particles in one block (no-op if there is room already).
@@ -177,7 +177,7 @@ class ParticleSystem
       acceleration_ = acceleration;
     }
   }
-  Vector3<R> acceleration() const noexcept requires(!per_particle_acceleration) {
+  [[nodiscard]] Vector3<R> acceleration() const noexcept requires(!per_particle_acceleration) {
     return acceleration_;
   }
   /// The damping of every particle, in [0, 1] (per second or per frame, as the policy says).
@@ -191,7 +191,9 @@ class ParticleSystem
       State::forget_factors();
     }
   }
-  R damping() const noexcept requires(!per_particle_damping) { return damping_.value(); }
+  [[nodiscard]] R damping() const noexcept requires(!per_particle_damping) {
+    return damping_.value();
+  }
 
   // --- spawning and killing ------------------------------------------------------------------
 
@@ -308,15 +310,16 @@ class ParticleSystem
 
   // --- per-particle values (index < size(): checked when POINTMASS_CHECKS is on) -------------
 
-  Vector3<position_value> position(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
+  [[nodiscard]] Vector3<position_value> position(std::size_t i) const
+      noexcept(!POINTMASS_HOST_CHECKS) {
     return valid_index("position", i) ? State::load_position(i) : Vector3<position_value>{};
   }
-  Vector3<R> velocity(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
+  [[nodiscard]] Vector3<R> velocity(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
     if (!valid_index("velocity", i)) return {};
     return load(arrays().velocity_x, arrays().velocity_y, arrays().velocity_z, i);
   }
   /// The acceleration particle i has (its own, or the system's).
-  Vector3<R> acceleration(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
+  [[nodiscard]] Vector3<R> acceleration(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
     if (!valid_index("acceleration", i)) return {};
     if constexpr (per_particle_acceleration) {
       return load(arrays().acceleration_x, arrays().acceleration_y, arrays().acceleration_z, i);
@@ -325,7 +328,7 @@ class ParticleSystem
     }
   }
   /// The damping particle i has (its own, or the system's).
-  R damping(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
+  [[nodiscard]] R damping(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
     if (!valid_index("damping", i)) return R(1);
     if constexpr (per_particle_damping) {
       return Layout::load_damping(arrays(), i).value();
@@ -396,7 +399,7 @@ class ParticleSystem
 
   /// True when the next `step` walks the particles backwards (see alternates). A copy
   /// starts forwards; a move or swap takes the direction along.
-  bool next_step_backward() const noexcept { return State::backward_; }
+  [[nodiscard]] bool next_step_backward() const noexcept { return State::backward_; }
 
   // Loops of one's own (a device, a thread pool: parallel.hpp, kokkos.hpp) step the arrays
   // with step_particle(arrays(), i, step_parameters(t)) for i < size(), after begin_step(t)

@@ -135,16 +135,10 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 /// (None, Exact) and (Exact, Exact).
 /// (A policy that does not state its exactness is taken as not exact.)
 template <class D, class P>
-inline constexpr bool is_exact_for_constant_acceleration_v = [] {
-  if constexpr (requires {
-                  requires D::exact_for_constant_acceleration;
-                  requires P::template exact_for_constant_acceleration<D>;
-                }) {
-    return true;
-  } else {
-    return false;
-  }
-}();
+inline constexpr bool is_exact_for_constant_acceleration_v = requires {
+  requires D::exact_for_constant_acceleration;
+  requires P::template exact_for_constant_acceleration<D>;
+};
 
 /// The pair's global order of accuracy against the continuous model when the acceleration
 /// varies over a step (a spring): the lower of the two policies' orders (1 where a policy

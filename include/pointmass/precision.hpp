@@ -164,6 +164,21 @@ using canonical_precision_t =
 
 namespace detail {
 
+/// round_once where z overflowed T (y is static_cast<T>(z), infinite): only a z exactly halfway
+/// between the largest T and the next power of two, with x short of it (r pointing back
+/// towards zero), rounds to the largest T.
+template <Real T, Real W>
+POINTMASS_HD constexpr T round_once_overflowed(T y, W z, W r) noexcept {
+  using Bits = typename FloatBits<T>::type;
+  const T largest = std::numeric_limits<T>::max();
+  const T below = __builtin_bit_cast(T, static_cast<Bits>(__builtin_bit_cast(Bits, largest) - 1u));
+  const W midpoint =
+      static_cast<W>(largest) + (static_cast<W>(largest) - static_cast<W>(below)) / W(2);
+  if (real_equal(z, midpoint) && r < W(0)) return largest;
+  if (real_equal(z, -midpoint) && r > W(0)) return -largest;
+  return y;
+}
+
 /// x = z + r rounded once to T, for z of a wider Real W, where z is x rounded to nearest in W
 /// and r has the sign of x - z (0 when z is x): static_cast<T>(z) unless z lies halfway
 /// between two T (a T midpoint is a W, so only there can rounding z differ from rounding x);
@@ -176,18 +191,7 @@ POINTMASS_HD constexpr T round_once(W z, W r) noexcept {
     const T y = static_cast<T>(z);
     if (real_equal(r, W(0))) return y;
     using Bits = typename FloatBits<T>::type;
-    if (!real_isfinite(y)) {
-      // z overflowed T: only a z exactly halfway between the largest T and the next power of
-      // two, with x short of it (r pointing back towards zero), rounds to the largest T.
-      const T largest = std::numeric_limits<T>::max();
-      const T below =
-          __builtin_bit_cast(T, static_cast<Bits>(__builtin_bit_cast(Bits, largest) - 1u));
-      const W midpoint =
-          static_cast<W>(largest) + (static_cast<W>(largest) - static_cast<W>(below)) / W(2);
-      if (real_equal(z, midpoint) && r < W(0)) return largest;
-      if (real_equal(z, -midpoint) && r > W(0)) return -largest;
-      return y;
-    }
+    if (!real_isfinite(y)) return round_once_overflowed(y, z, r);
     const W d = z - static_cast<W>(y);  // exact: z and y are within half an ulp of T
     if (real_equal(d, W(0))) return y;
     // y's neighbour on z's side, by its bits (T is float or double where W is wider).
@@ -297,7 +301,7 @@ struct PositionStorage<Compensated<R>> {
   /// R's largest plus half its ulp, 2^(max_exponent - digits - 1): the midpoint between the
   /// largest R and the next power of two, the most a pair's hi + lo reaches (element_of).
   static constexpr value beyond_largest = [] {
-    value half_ulp = value(1);
+    auto half_ulp = value(1);
     for (int i = 0; i < std::numeric_limits<R>::max_exponent - std::numeric_limits<R>::digits - 1;
          ++i) {
       half_ulp *= value(2);
@@ -353,8 +357,8 @@ struct PositionStorage<Compensated<R>> {
       // in T is rounded once there.
       return (static_cast<T>(hi) + static_cast<T>(lo)) - static_cast<T>(origin);
     }
-    const value h = static_cast<value>(hi);
-    const value l = static_cast<value>(lo);
+    const auto h = static_cast<value>(hi);
+    const auto l = static_cast<value>(lo);
     // The usual case first: hi + lo held exactly by the wider type (lo within its digits of
     // hi; TwoSum's error says so), so the offset is p - origin, one TwoSum and round_once.
     // Not in a loop over many offsets (BranchFree): there the branch kept the loop from

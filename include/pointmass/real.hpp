@@ -68,7 +68,7 @@ inline constexpr bool has_ieee_bits_v = (std::same_as<R, float> && sizeof(float)
 // docs/numerics.md says what still changes under those flags.
 
 template <Real R>
-POINTMASS_HD constexpr bool real_isnan(R x) noexcept {
+[[nodiscard]] POINTMASS_HD constexpr bool real_isnan(R x) noexcept {
   if constexpr (detail::has_ieee_bits_v<R>) {
     using Bits = detail::FloatBits<R>;
     return (__builtin_bit_cast(typename Bits::type, x) & Bits::magnitude_mask) >
@@ -79,7 +79,7 @@ POINTMASS_HD constexpr bool real_isnan(R x) noexcept {
 }
 
 template <Real R>
-POINTMASS_HD constexpr bool real_isfinite(R x) noexcept {
+[[nodiscard]] POINTMASS_HD constexpr bool real_isfinite(R x) noexcept {
   if constexpr (detail::has_ieee_bits_v<R>) {
     using Bits = detail::FloatBits<R>;
     return (__builtin_bit_cast(typename Bits::type, x) & Bits::exponent_mask) !=
@@ -94,7 +94,7 @@ POINTMASS_HD constexpr bool real_isfinite(R x) noexcept {
 /// be wrong). The one comparison is here, with -Wfloat-equal silenced for that reason, so that
 /// the headers build clean for a consumer compiling with -Wfloat-equal -Werror.
 template <Real R>
-POINTMASS_HD constexpr bool real_equal(R x, R y) noexcept {
+[[nodiscard]] POINTMASS_HD constexpr bool real_equal(R x, R y) noexcept {
 #if defined(__GNUC__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wfloat-equal"
@@ -135,7 +135,7 @@ POINTMASS_HD constexpr bool is_zero(R x) noexcept {
 }  // namespace detail
 
 template <Real R>
-POINTMASS_HD constexpr R real_abs(R x) noexcept {
+[[nodiscard]] POINTMASS_HD constexpr R real_abs(R x) noexcept {
   if constexpr (std::same_as<R, float>) return __builtin_fabsf(x);
   else if constexpr (std::same_as<R, double>) return __builtin_fabs(x);
   else return __builtin_fabsl(x);
@@ -143,7 +143,7 @@ POINTMASS_HD constexpr R real_abs(R x) noexcept {
 
 /// base^exponent in R: powf, pow or powl.
 template <Real R>
-POINTMASS_HD inline R real_pow(R base, R exponent) noexcept {
+[[nodiscard]] POINTMASS_HD inline R real_pow(R base, R exponent) noexcept {
   if constexpr (std::same_as<R, float>) return ::powf(base, exponent);
   else if constexpr (std::same_as<R, double>) return ::pow(base, exponent);
   else return ::powl(base, exponent);
@@ -216,7 +216,7 @@ POINTMASS_HD constexpr R exact_sqrt(R x) noexcept {
 /// Square root in R; usable in constant expressions, where float and double take
 /// detail::exact_sqrt (correctly rounded, as at run time) and long double Newton's iteration.
 template <Real R>
-POINTMASS_HD constexpr R real_sqrt(R x) noexcept {
+[[nodiscard]] POINTMASS_HD constexpr R real_sqrt(R x) noexcept {
   if (std::is_constant_evaluated()) {
     if (!(x > R(0)) || !real_isfinite(x)) return real_equal(x, R(0)) || x > R(0) ? x : R(0) / R(0);
     if constexpr (detail::has_ieee_bits_v<R>) {
@@ -237,14 +237,14 @@ POINTMASS_HD constexpr R real_sqrt(R x) noexcept {
 
 /// Natural logarithm in R.
 template <Real R>
-POINTMASS_HD inline R real_log(R x) noexcept {
+[[nodiscard]] POINTMASS_HD inline R real_log(R x) noexcept {
   if constexpr (std::same_as<R, float>) return ::logf(x);
   else if constexpr (std::same_as<R, double>) return ::log(x);
   else return ::logl(x);
 }
 
 template <Real R>
-POINTMASS_HD inline R real_exp(R x) noexcept {
+[[nodiscard]] POINTMASS_HD inline R real_exp(R x) noexcept {
   if constexpr (std::same_as<R, float>) return ::expf(x);
   else if constexpr (std::same_as<R, double>) return ::exp(x);
   else return ::expl(x);
@@ -259,14 +259,14 @@ POINTMASS_HD inline R real_expm1(R x) noexcept {
 }
 
 template <Real R>
-POINTMASS_HD inline R real_sin(R x) noexcept {
+[[nodiscard]] POINTMASS_HD inline R real_sin(R x) noexcept {
   if constexpr (std::same_as<R, float>) return ::sinf(x);
   else if constexpr (std::same_as<R, double>) return ::sin(x);
   else return ::sinl(x);
 }
 
 template <Real R>
-POINTMASS_HD inline R real_cos(R x) noexcept {
+[[nodiscard]] POINTMASS_HD inline R real_cos(R x) noexcept {
   if constexpr (std::same_as<R, float>) return ::cosf(x);
   else if constexpr (std::same_as<R, double>) return ::cos(x);
   else return ::cosl(x);
@@ -288,7 +288,7 @@ struct TimeTraits {
 
 /// The number of seconds in a duration, as the duration's Real.
 template <class T>
-POINTMASS_HD constexpr scalar_t<T> in_seconds(const T& t) noexcept {
+[[nodiscard]] POINTMASS_HD constexpr scalar_t<T> in_seconds(const T& t) noexcept {
   return TimeTraits<T>::seconds(t);
 }
 

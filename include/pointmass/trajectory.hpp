@@ -101,13 +101,28 @@ R bisect(const Flight& flight, R value, R lo, R hi) noexcept {
                                                                                              : hi;
 }
 
+/// The turning point of the flight, where its velocity passes 0; 0 unless v0 and a have
+/// opposite signs.
+template <Real R, class D>
+R turning_time(const CoordinateFlight<R, D>& flight) {
+  if (!((flight.v0 > R(0) && flight.a < R(0)) || (flight.v0 < R(0) && flight.a > R(0)))) {
+    return R(0);
+  }
+  R k = R(0);
+  if constexpr (std::is_same_v<D, damping::Exact>) k = flight.damping.log_value();
+  const R ratio = flight.v0 / flight.a;                             // < 0
+  const R x = k * ratio;                                            // >= 0
+  const R shrink = real_equal(x, R(0)) ? R(1) : std::log1p(x) / x;  // ln(1 + x)/x in (0, 1]
+  return real_isfinite(x) && real_isfinite(ratio) ? -ratio * shrink : R(0);
+}
+
 }  // namespace detail
 
 /// The particle's position and velocity `time` seconds from now (time finite and >= 0), under
 /// its acceleration and damping, without stepping it: particle.integrate(time) on a copy.
 template <Real R, class D>
   requires(detail::trajectory_damping_v<D>)
-TrajectoryState<R> state_at(const Particle<R, D, position::Exact>& particle, R time) {
+[[nodiscard]] TrajectoryState<R> state_at(const Particle<R, D, position::Exact>& particle, R time) {
   if (!detail::check_duration("state_at", "time", time)) {
     return {particle.position(), particle.velocity()};
   }
@@ -121,12 +136,12 @@ TrajectoryState<R> state_at(const Particle<R, D, position::Exact>& particle, R t
 }
 template <Real R, class D>
   requires(detail::trajectory_damping_v<D>)
-Vector3<R> position_at(const Particle<R, D, position::Exact>& particle, R time) {
+[[nodiscard]] Vector3<R> position_at(const Particle<R, D, position::Exact>& particle, R time) {
   return state_at(particle, time).position;
 }
 template <Real R, class D>
   requires(detail::trajectory_damping_v<D>)
-Vector3<R> velocity_at(const Particle<R, D, position::Exact>& particle, R time) {
+[[nodiscard]] Vector3<R> velocity_at(const Particle<R, D, position::Exact>& particle, R time) {
   return state_at(particle, time).velocity;
 }
 
@@ -134,8 +149,8 @@ Vector3<R> velocity_at(const Particle<R, D, position::Exact>& particle, R time) 
 /// or std::nullopt when it never does (see the header's comment). 0 when it is there now.
 template <Real R, class D>
   requires(detail::trajectory_damping_v<D>)
-std::optional<R> time_to_reach(const Particle<R, D, position::Exact>& particle, Axis axis,
-                               R value) {
+[[nodiscard]] std::optional<R> time_to_reach(const Particle<R, D, position::Exact>& particle,
+                                             Axis axis, R value) {
   if (!detail::check_finite("time_to_reach", "value", value)) return std::nullopt;
   detail::CoordinateFlight<R, D> flight;
   if constexpr (std::is_same_v<D, damping::Exact>) {
@@ -148,16 +163,7 @@ std::optional<R> time_to_reach(const Particle<R, D, position::Exact>& particle, 
   if (real_equal(gap, R(0))) return R(0);
   if (!(particle.damping() > R(0))) return std::nullopt;  // d = 0: it stays where it is
 
-  // The turning point, where the velocity passes 0 (only when v0 and a have opposite signs).
-  R turn = R(0);
-  if ((flight.v0 > R(0) && flight.a < R(0)) || (flight.v0 < R(0) && flight.a > R(0))) {
-    R k = R(0);
-    if constexpr (std::is_same_v<D, damping::Exact>) k = flight.damping.log_value();
-    const R ratio = flight.v0 / flight.a;                             // < 0
-    const R x = k * ratio;                                            // >= 0
-    const R shrink = real_equal(x, R(0)) ? R(1) : std::log1p(x) / x;  // ln(1 + x)/x in (0, 1]
-    turn = real_isfinite(x) && real_isfinite(ratio) ? -ratio * shrink : R(0);
-  }
+  const R turn = detail::turning_time(flight);
   // The first piece, [0, turn]: monotone from p0 to p(turn).
   if (turn > R(0)) {
     const R at_turn = flight.position(turn);

@@ -95,7 +95,7 @@ using force = bu::quantity<bu::si::force, R>;
 /// default the Earth's (pointmass::gravity as SI quantities).
 ///   particle.set_acceleration(pointmass::units::gravity<double>());
 template <Real R>
-constexpr Vector3<acceleration<R>> gravity(
+[[nodiscard]] constexpr Vector3<acceleration<R>> gravity(
     acceleration<R> g = acceleration<R>::from_value(earth_gravity<R>)) noexcept {
   return {acceleration<R>::from_value(R(0)), -g, acceleration<R>::from_value(R(0))};
 }

@@ -255,26 +255,27 @@ POINTMASS_HD constexpr auto operator/(const Vector3<T>& v, const S& s) noexcept
 
 /// Element-by-element product (x1 x2, y1 y2, z1 z2).
 template <class T, class U>
-POINTMASS_HD constexpr auto component_product(const Vector3<T>& a, const Vector3<U>& b) noexcept
+[[nodiscard]] POINTMASS_HD constexpr auto component_product(const Vector3<T>& a,
+                                                            const Vector3<U>& b) noexcept
     -> Vector3<decltype(a.x * b.x)> {
   return {a.x * b.x, a.y * b.y, a.z * b.z};
 }
 
 template <class T, class U>
-POINTMASS_HD constexpr auto dot(const Vector3<T>& a, const Vector3<U>& b) noexcept
+[[nodiscard]] POINTMASS_HD constexpr auto dot(const Vector3<T>& a, const Vector3<U>& b) noexcept
     -> decltype(a.x * b.x) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
 /// Right-handed cross product.
 template <class T, class U>
-POINTMASS_HD constexpr auto cross(const Vector3<T>& a, const Vector3<U>& b) noexcept
+[[nodiscard]] POINTMASS_HD constexpr auto cross(const Vector3<T>& a, const Vector3<U>& b) noexcept
     -> Vector3<decltype(a.x * b.x)> {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
 template <Real T>
-POINTMASS_HD constexpr T square_magnitude(const Vector3<T>& v) noexcept {
+[[nodiscard]] POINTMASS_HD constexpr T square_magnitude(const Vector3<T>& v) noexcept {
   return dot(v, v);
 }
 
@@ -292,7 +293,9 @@ POINTMASS_HD constexpr bool square_is_exact_enough(T square) noexcept {
 /// The largest |component| (NaN if a component is NaN).
 template <Real T>
 POINTMASS_HD constexpr T largest_component(const Vector3<T>& v) noexcept {
-  const T x = real_abs(v.x), y = real_abs(v.y), z = real_abs(v.z);
+  const T x = real_abs(v.x);
+  const T y = real_abs(v.y);
+  const T z = real_abs(v.z);
   if (real_isnan(x) || real_isnan(y) || real_isnan(z)) return x + y + z;
   const T xy = x > y ? x : y;
   return xy > z ? xy : z;
@@ -301,7 +304,7 @@ POINTMASS_HD constexpr T largest_component(const Vector3<T>& v) noexcept {
 }  // namespace detail
 
 template <Real T>
-POINTMASS_HD constexpr T magnitude(const Vector3<T>& v) noexcept {
+[[nodiscard]] POINTMASS_HD constexpr T magnitude(const Vector3<T>& v) noexcept {
   const T square = square_magnitude(v);
   if (detail::square_is_exact_enough(square)) return real_sqrt(square);
   // Scaled: |v| = s |v / s| with s the largest component, so nothing over- or underflows.
@@ -323,12 +326,12 @@ POINTMASS_HD constexpr Vector3<T>& Vector3<T>::normalize() noexcept requires Rea
 /// A unit vector in v's direction for any finite non-zero v; the zero vector for the zero
 /// vector.
 template <Real T>
-POINTMASS_HD constexpr Vector3<T> normalized(Vector3<T> v) noexcept {
+[[nodiscard]] POINTMASS_HD constexpr Vector3<T> normalized(Vector3<T> v) noexcept {
   return v.normalize();
 }
 
 template <Real T>
-POINTMASS_HD constexpr bool is_finite(const Vector3<T>& v) noexcept {
+[[nodiscard]] POINTMASS_HD constexpr bool is_finite(const Vector3<T>& v) noexcept {
   return real_isfinite(v.x) && real_isfinite(v.y) && real_isfinite(v.z);
 }
 

@@ -59,9 +59,9 @@ class HandleTable {
   ~HandleTable() = default;
 
   void reserve(std::size_t count) { slots_.reserve(count < max_slots ? count : max_slots); }
-  std::size_t slot_count() const noexcept { return slots_.size(); }
+  [[nodiscard]] std::size_t slot_count() const noexcept { return slots_.size(); }
   /// Bytes the table holds (beside the block).
-  std::size_t bytes() const noexcept { return slots_.capacity() * sizeof(Slot); }
+  [[nodiscard]] std::size_t bytes() const noexcept { return slots_.capacity() * sizeof(Slot); }
 
   /// A slot naming the particle at `index`: a freed slot if there is one, else a new one;
   /// `none` when every slot number is taken (the caller reports it). May allocate.
@@ -89,11 +89,13 @@ class HandleTable {
   void relocate(std::uint32_t slot, std::size_t index) noexcept {
     slots_[slot].index = static_cast<std::uint32_t>(index);
   }
-  Handle handle(std::uint32_t slot) const noexcept { return {slot, slots_[slot].generation}; }
+  [[nodiscard]] Handle handle(std::uint32_t slot) const noexcept {
+    return {slot, slots_[slot].generation};
+  }
   /// The index of the particle `handle` names, or nothing once it has died. A slot's
   /// generation changes at each death and no generation is issued twice, so an equal
   /// generation means the particle is alive.
-  std::optional<std::size_t> find(const Handle& handle) const noexcept {
+  [[nodiscard]] std::optional<std::size_t> find(const Handle& handle) const noexcept {
     if (handle.slot >= slots_.size()) return std::nullopt;
     const Slot& s = slots_[handle.slot];
     if (s.generation != handle.generation) return std::nullopt;

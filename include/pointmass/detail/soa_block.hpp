@@ -63,13 +63,13 @@ class SoaBlock {
   }
 
   Arrays& arrays() noexcept { return arrays_; }
-  const Arrays& arrays() const noexcept { return arrays_; }
-  std::size_t size() const noexcept { return arrays_.size; }
-  std::size_t capacity() const noexcept { return capacity_; }
+  [[nodiscard]] const Arrays& arrays() const noexcept { return arrays_; }
+  [[nodiscard]] std::size_t size() const noexcept { return arrays_.size; }
+  [[nodiscard]] std::size_t capacity() const noexcept { return capacity_; }
 
   /// A block of `capacity` particles holding a copy of this one's particles. The caller has
   /// checked capacity <= max_capacity and capacity >= size().
-  SoaBlock with_capacity(std::size_t capacity) const {
+  [[nodiscard]] SoaBlock with_capacity(std::size_t capacity) const {
     SoaBlock grown;
     if (capacity == 0) return grown;
     grown.allocate(capacity);

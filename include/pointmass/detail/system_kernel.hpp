@@ -166,7 +166,9 @@ class SystemKernel {
       arrays.previous_position_z[i] = arrays.position_z[i];
     }
     const auto factors = factors_of(arrays, i, parameters);
-    R ax, ay, az;
+    R ax;
+    R ay;
+    R az;
     if constexpr (Layout::per_particle_acceleration) {
       ax = arrays.acceleration_x[i];
       ay = arrays.acceleration_y[i];
@@ -267,18 +269,7 @@ class SystemKernel {
       const StepParameters& parameters) noexcept {
     const std::size_t blocked = count & ~(vector_block - 1);
     if constexpr (Layout::per_particle_retention) {
-      // A new step length: each particle's d^t first, in a loop of its own (vectorised for
-      // PerSecond; AccelerateThenDamp's powf is a call), so that the step's loop stays one.
-      if (parameters.refresh) {
-        const R t = parameters.duration;
-        if constexpr (std::is_same_v<D, damping::PerSecond> && !wider_than_double_v<R>) {
-          POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
-          for (std::size_t k = 0; k < blocked; ++k) refresh_retention(arrays, first + k, t);
-        } else {
-          for (std::size_t k = 0; k < blocked; ++k) refresh_retention(arrays, first + k, t);
-        }
-        for (std::size_t k = blocked; k < count; ++k) refresh_retention(arrays, first + k, t);
-      }
+      if (parameters.refresh) refresh_segment(arrays, first, count, blocked, parameters.duration);
     }
     if constexpr (vectorisable && skips_movable_select) {
       // When every particle of the segment (at most movable_chunk) is movable, its loop
@@ -299,6 +290,19 @@ class SystemKernel {
     } else {  // a power function per particle: no vector loop to ask for
       for (std::size_t k = 0; k < count; ++k) step_kept(arrays, first + k, parameters);
     }
+  }
+  // A new step length t: each particle's d^t first, in a loop of its own (vectorised for
+  // PerSecond; AccelerateThenDamp's powf is a call), so that the step's loop stays one.
+  POINTMASS_DETAIL_ALWAYS_INLINE static void refresh_segment(const Arrays& arrays,
+                                                             std::size_t first, std::size_t count,
+                                                             std::size_t blocked, R t) noexcept {
+    if constexpr (std::is_same_v<D, damping::PerSecond> && !wider_than_double_v<R>) {
+      POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
+      for (std::size_t k = 0; k < blocked; ++k) refresh_retention(arrays, first + k, t);
+    } else {
+      for (std::size_t k = 0; k < blocked; ++k) refresh_retention(arrays, first + k, t);
+    }
+    for (std::size_t k = blocked; k < count; ++k) refresh_retention(arrays, first + k, t);
   }
   // The step loop over particles [first, first + count), count a multiple of vector_block
   // (said again by the mask, so that the compiler needs no remainder loop): one source line

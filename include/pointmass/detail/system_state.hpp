@@ -98,8 +98,12 @@ class SystemState {
         kept_(other.kept_) {
     ++other.replacements_;  // its particles left with the move
   }
+
+ public:
   SystemState& operator=(const SystemState&) = delete;  // the system assigns by swap
   SystemState& operator=(SystemState&&) = delete;
+
+ protected:
   ~SystemState() = default;
 
   void swap_state(SystemState& other) noexcept {
@@ -130,9 +134,9 @@ class SystemState {
 
   // --- size and capacity ---------------------------------------------------------------------
 
-  std::size_t size() const noexcept { return block_.size(); }
-  std::size_t capacity() const noexcept { return block_.capacity(); }
-  const Arrays& arrays() const noexcept { return block_.arrays(); }
+  [[nodiscard]] std::size_t size() const noexcept { return block_.size(); }
+  [[nodiscard]] std::size_t capacity() const noexcept { return block_.capacity(); }
+  [[nodiscard]] const Arrays& arrays() const noexcept { return block_.arrays(); }
   void set_size(std::size_t size) noexcept { block_.arrays().size = size; }
 
   static constexpr std::size_t max_size() noexcept {
@@ -358,7 +362,7 @@ class SystemState {
       a.previous_position_z[i] = a.position_z[i];
     }
   }
-  Vector3<position_value> load_position(std::size_t i) const noexcept {
+  [[nodiscard]] Vector3<position_value> load_position(std::size_t i) const noexcept {
     const Arrays& a = arrays();
     if constexpr (compensated) {
       return {Storage::value_of(a.position_x[i], a.position_error_x[i]),
@@ -420,7 +424,7 @@ class SystemState {
 
   // The kept factors where the last step had this length, else computed (the scalar form, the
   // same bits): reads the system only, so loops of one's own may call it as before.
-  StepParameters step_parameters(R duration) const noexcept {
+  [[nodiscard]] StepParameters step_parameters(R duration) const noexcept {
     if constexpr (keeps_factors) {
       if (same_bits(duration, kept_.duration)) return parameters_with(duration, kept_.factors);
     }
@@ -448,7 +452,8 @@ class SystemState {
     if constexpr (keeps_factors) kept_.duration = R(-1);
   }
   template <class Factors>
-  StepParameters parameters_with(R duration, const Factors& factors) const noexcept {
+  [[nodiscard]] [[nodiscard]] StepParameters parameters_with(
+      R duration, const Factors& factors) const noexcept {
     StepParameters parameters{};
     parameters.duration = duration;
     if constexpr (!Layout::per_particle_damping) parameters.factors = factors;
@@ -540,23 +545,29 @@ class SystemState {
             continue;
           }
         }
-        if (expired(age[i], lifetime[i])) {
-          if constexpr (!std::is_same_v<std::remove_cvref_t<OnExpire>, NoCallback>) {
-            const std::uint16_t replacements = replacements_;
-            {
-              const PassScope scope(removing_, RemovalPass::expiry);
-              on_expire(std::as_const(i));
-            }
-            // The callback may only spawn (which keeps i); should it have replaced the
-            // particles whole (assigned, swapped or moved the system), the pass ends there.
-            if (replacements_ != replacements) return;
-          }
-          remove(i);
-        } else {
+        if (!expired(age[i], lifetime[i])) {
           ++i;
+        } else if (!expire_one(i, on_expire)) {
+          return;
         }
       }
     }
+  }
+  // Particle i, expired: on_expire(i), then its removal. False when the callback replaced the
+  // particles whole (assigned, swapped or moved the system): the pass ends there.
+  template <class OnExpire>
+  bool expire_one(std::size_t i, OnExpire& on_expire) {
+    if constexpr (!std::is_same_v<std::remove_cvref_t<OnExpire>, NoCallback>) {
+      const std::uint16_t replacements = replacements_;
+      {
+        const PassScope scope(removing_, RemovalPass::expiry);
+        on_expire(std::as_const(i));
+      }
+      // The callback may only spawn (which keeps i).
+      if (replacements_ != replacements) return false;
+    }
+    remove(i);
+    return true;
   }
 
   // --- copy-out ------------------------------------------------------------------------------
@@ -648,7 +659,7 @@ class SystemState {
     // (size() - 1) * stride + 3 elements, saturated: a stride too large for any buffer must
     // not wrap around to a small count.
     const std::size_t rows = size() - 1;
-    constexpr std::size_t most = static_cast<std::size_t>(-1);
+    constexpr auto most = static_cast<std::size_t>(-1);
     const std::size_t needed = rows != 0 && stride > (most - 3) / rows ? most : rows * stride + 3;
     if (!check_strided_buffer(function, out.size(), needed)) return;
     T* data = out.data();

@@ -74,7 +74,7 @@ struct SpanBodies {
   std::span<Vector3<R>> forces;
   R uniform_inverse_mass = R(1);
 
-  std::size_t size() const noexcept { return forces.size(); }
+  [[nodiscard]] std::size_t size() const noexcept { return forces.size(); }
   /// Whether every span has an element for each body; if not, reports the first that is
   /// shorter (naming `function`, the span and its length) and returns false.
   constexpr bool valid(const char* function) const {
@@ -107,7 +107,7 @@ struct SoaBodies {
   std::span<R> fx, fy, fz;
   R uniform_inverse_mass = R(1);
 
-  std::size_t size() const noexcept { return fx.size(); }
+  [[nodiscard]] std::size_t size() const noexcept { return fx.size(); }
   /// Whether every span has an element for each body; if not, reports the first that is
   /// shorter (naming `function`, the span and its length) and returns false.
   constexpr bool valid(const char* function) const {
@@ -227,7 +227,7 @@ class RelativeBody : public detail::OriginView<P, typename P::position_type> {
   }
   constexpr Vector3<real> velocity() const noexcept { return body().velocity(); }
   constexpr real inverse_mass() const noexcept { return body().inverse_mass(); }
-  constexpr bool has_finite_mass() const noexcept { return body().has_finite_mass(); }
+  [[nodiscard]] constexpr bool has_finite_mass() const noexcept { return body().has_finite_mass(); }
   constexpr void add_force(const Vector3<real>& f) { body().add_force(f); }
   constexpr P& body() const noexcept { return this->viewed(); }
 };
@@ -243,7 +243,9 @@ class RelativeBodies : public detail::OriginView<B, typename B::position_value> 
   using position_value = typename B::position_value;
   using View::View;
 
-  std::size_t size() const noexcept { return static_cast<std::size_t>(bodies().size()); }
+  [[nodiscard]] std::size_t size() const noexcept {
+    return static_cast<std::size_t>(bodies().size());
+  }
   Vector3<real> position(std::size_t i) const {
     return bodies().template position_relative_to<real>(i, this->origin());
   }
@@ -255,13 +257,13 @@ class RelativeBodies : public detail::OriginView<B, typename B::position_value> 
 
 /// `body` (a particle with wide positions) as generators see it from `origin`.
 template <WideBody P>
-constexpr RelativeBody<P> relative_to(P& body,
-                                      const Vector3<typename P::position_type>& origin) noexcept {
+[[nodiscard]] constexpr RelativeBody<P> relative_to(
+    P& body, const Vector3<typename P::position_type>& origin) noexcept {
   return RelativeBody<P>(body, origin);
 }
 /// `bodies` (a batch with wide positions) as generators see them from `origin`.
 template <WideBodies B>
-constexpr RelativeBodies<B> relative_to(
+[[nodiscard]] constexpr RelativeBodies<B> relative_to(
     B& bodies, const Vector3<typename B::position_value>& origin) noexcept {
   return RelativeBodies<B>(bodies, origin);
 }

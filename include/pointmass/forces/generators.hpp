@@ -34,7 +34,8 @@ struct Separation {
 };
 
 template <Real R>
-constexpr Separation<R> separation(const Vector3<R>& p, const Vector3<R>& q) noexcept {
+[[nodiscard]] constexpr Separation<R> separation(const Vector3<R>& p,
+                                                 const Vector3<R>& q) noexcept {
   Vector3<R> d = p - q;
   R length = magnitude(d);
   R scale = R(1);
@@ -75,13 +76,13 @@ class Gravity {
     g_ = pointmass::detail::check_finite("Gravity::set_gravity", "gravity", g) ? g : Vector3<R>{};
   }
 
-  constexpr Vector3<R> gravity() const noexcept { return g_; }
+  [[nodiscard]] constexpr Vector3<R> gravity() const noexcept { return g_; }
   constexpr void set_gravity(const Vector3<R>& g) {
     if (pointmass::detail::check_finite("Gravity::set_gravity", "gravity", g)) g_ = g;
   }
 
-  constexpr Vector3<R> force(const Vector3<R>&, const Vector3<R>&, R inverse_mass,
-                             R) const noexcept {
+  [[nodiscard]] constexpr Vector3<R> force(const Vector3<R>&, const Vector3<R>&, R inverse_mass,
+                                           R) const noexcept {
     if (!(inverse_mass > R(0))) return {};
     return g_ / inverse_mass;
   }
@@ -107,8 +108,8 @@ class Drag {
     }
   }
 
-  constexpr R k1() const noexcept { return k1_; }
-  constexpr R k2() const noexcept { return k2_; }
+  [[nodiscard]] constexpr R k1() const noexcept { return k1_; }
+  [[nodiscard]] constexpr R k2() const noexcept { return k2_; }
   constexpr void set_k1(R k1) {
     pointmass::detail::assign_non_negative("Drag::set_k1", "k1", k1, k1_);
   }
@@ -116,7 +117,8 @@ class Drag {
     pointmass::detail::assign_non_negative("Drag::set_k2", "k2", k2, k2_);
   }
 
-  constexpr Vector3<R> force(const Vector3<R>&, const Vector3<R>& v, R, R) const noexcept {
+  [[nodiscard]] constexpr Vector3<R> force(const Vector3<R>&, const Vector3<R>& v, R,
+                                           R) const noexcept {
     // k2 = 0 never multiplies the speed (which may be infinite for |v| beyond the largest R).
     const R per_speed = k2_ > R(0) ? k1_ + k2_ * magnitude(v) : k1_;
     if (real_isfinite(per_speed)) return v * -per_speed;
@@ -155,8 +157,8 @@ class SpringParameters {
       rest_length_ = rest_length;
     }
   }
-  constexpr R stiffness() const noexcept { return k_; }
-  constexpr R rest_length() const noexcept { return rest_length_; }
+  [[nodiscard]] constexpr R stiffness() const noexcept { return k_; }
+  [[nodiscard]] constexpr R rest_length() const noexcept { return rest_length_; }
   constexpr void set_stiffness(R stiffness) {
     pointmass::detail::assign_non_negative("set_stiffness", "stiffness", stiffness, k_);
   }
@@ -166,8 +168,8 @@ class SpringParameters {
   }
 
   /// The force on the end at p from the end at `other_position`.
-  constexpr Vector3<R> force_between(const Vector3<R>& p,
-                                     const Vector3<R>& other_position) const noexcept {
+  [[nodiscard]] constexpr Vector3<R> force_between(
+      const Vector3<R>& p, const Vector3<R>& other_position) const noexcept {
     return detail::spring_force(p, other_position, k_, rest_length_, IsBungee);
   }
 
@@ -198,12 +200,13 @@ class BasicAnchoredSpring : public SpringParameters<R, IsBungee> {
       this->make_inert();
     }
   }
-  constexpr Vector3<R> anchor() const noexcept { return anchor_; }
+  [[nodiscard]] constexpr Vector3<R> anchor() const noexcept { return anchor_; }
   constexpr void set_anchor(const Vector3<R>& anchor) {
     if (pointmass::detail::check_finite("set_anchor", "anchor", anchor)) anchor_ = anchor;
   }
 
-  constexpr Vector3<R> force(const Vector3<R>& p, const Vector3<R>&, R, R) const noexcept {
+  [[nodiscard]] constexpr Vector3<R> force(const Vector3<R>& p, const Vector3<R>&, R,
+                                           R) const noexcept {
     return this->force_between(p, anchor_);
   }
 
@@ -243,7 +246,7 @@ class BasicSpring : public SpringParameters<typename Body::real, IsBungee> {
                   "temporary: pass a named body (or view) that outlives the spring.");
   }
 
-  constexpr const Body* other() const noexcept { return other_; }
+  [[nodiscard]] constexpr const Body* other() const noexcept { return other_; }
   constexpr void set_other(const Body& other) noexcept { other_ = &other; }
   template <class Other>
     requires(temporary_other<Other>)
@@ -349,7 +352,9 @@ class Buoyancy {
   constexpr R lift() const noexcept {
     const R usual = density_ * volume_ * g_;
     if (real_isfinite(usual)) return usual;
-    R a = density_, b = volume_, c = g_;
+    R a = density_;
+    R b = volume_;
+    R c = g_;
     const auto order = [](R& larger, R& smaller) {
       if (larger < smaller) {
         const R t = larger;

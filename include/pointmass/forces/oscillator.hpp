@@ -49,9 +49,10 @@ struct OscillatorState {
 /// finite; t negative, NaN or infinite) is a contract violation, checked when
 /// POINTMASS_CHECKS is on: reported, naming it, and the result is (x0, v0).
 template <Real R>
-constexpr OscillatorState<R> damped_oscillator(R w0_squared, R gamma, const Vector3<R>& x0,
-                                               const Vector3<R>& v0,
-                                               R t) noexcept(!POINTMASS_HOST_CHECKS);
+[[nodiscard]] constexpr OscillatorState<R> damped_oscillator(R w0_squared, R gamma,
+                                                             const Vector3<R>& x0,
+                                                             const Vector3<R>& v0,
+                                                             R t) noexcept(!POINTMASS_HOST_CHECKS);
 
 namespace detail {
 /// damped_oscillator without its checks: the generators below call it with parameters their
@@ -181,9 +182,10 @@ constexpr PushResponse<R> push_response(R w0_squared, R gamma, R t) noexcept {
 }  // namespace detail
 
 template <Real R>
-constexpr OscillatorState<R> damped_oscillator(R w0_squared, R gamma, const Vector3<R>& x0,
-                                               const Vector3<R>& v0,
-                                               R t) noexcept(!POINTMASS_HOST_CHECKS) {
+[[nodiscard]] constexpr OscillatorState<R> damped_oscillator(R w0_squared, R gamma,
+                                                             const Vector3<R>& x0,
+                                                             const Vector3<R>& v0,
+                                                             R t) noexcept(!POINTMASS_HOST_CHECKS) {
 #if POINTMASS_HOST_CHECKS
   constexpr const char* function = "forces::damped_oscillator";
   if (!pointmass::detail::check_non_negative(function, "w0_squared", w0_squared) ||

@@ -134,11 +134,11 @@ class ForceRegistry {
     compact_unless_updating();
   }
 
-  std::size_t size() const noexcept {
+  [[nodiscard]] std::size_t size() const noexcept {
     return std::apply([](const auto&... entries) { return (entries.size() + ... + 0u); }, known_) +
            erased_.size() - removed_;
   }
-  bool empty() const noexcept { return size() == 0; }
+  [[nodiscard]] bool empty() const noexcept { return size() == 0; }
 
   /// Asks every registered generator to add its force to its particle for a step of
   /// `duration`: the known types first (in the order of Known...), then the others, each in

@@ -79,18 +79,24 @@ class SystemColumns : public Base {
   std::span<R> velocity_x() noexcept { return column<Column::velocity_x>(); }
   std::span<R> velocity_y() noexcept { return column<Column::velocity_y>(); }
   std::span<R> velocity_z() noexcept { return column<Column::velocity_z>(); }
-  std::span<const position_element> position_x() const noexcept {
+  [[nodiscard]] std::span<const position_element> position_x() const noexcept {
     return column<Column::position_x>();
   }
-  std::span<const position_element> position_y() const noexcept {
+  [[nodiscard]] std::span<const position_element> position_y() const noexcept {
     return column<Column::position_y>();
   }
-  std::span<const position_element> position_z() const noexcept {
+  [[nodiscard]] std::span<const position_element> position_z() const noexcept {
     return column<Column::position_z>();
   }
-  std::span<const R> velocity_x() const noexcept { return column<Column::velocity_x>(); }
-  std::span<const R> velocity_y() const noexcept { return column<Column::velocity_y>(); }
-  std::span<const R> velocity_z() const noexcept { return column<Column::velocity_z>(); }
+  [[nodiscard]] std::span<const R> velocity_x() const noexcept {
+    return column<Column::velocity_x>();
+  }
+  [[nodiscard]] std::span<const R> velocity_y() const noexcept {
+    return column<Column::velocity_y>();
+  }
+  [[nodiscard]] std::span<const R> velocity_z() const noexcept {
+    return column<Column::velocity_z>();
+  }
 
   // --- user columns (features::Column<Tag, T>) -----------------------------------------------
 
@@ -122,7 +128,7 @@ class SystemColumns : public Base {
 
  private:
   template <class Tag>
-  auto* user_pointer() const noexcept {
+  [[nodiscard]] auto* user_pointer() const noexcept {
     return Layout::template user_pointer<Layout::template user_index<Tag>>(this->arrays());
   }
 };

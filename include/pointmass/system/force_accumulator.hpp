@@ -30,11 +30,11 @@ class SystemForceAccumulator : public Base {
   using R = typename Base::R;
 
  public:
-  R inverse_mass(std::size_t i) const
+  [[nodiscard]] R inverse_mass(std::size_t i) const
       noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_forces {
     return this->valid_index("inverse_mass", i) ? this->arrays().inverse_mass[i] : R(0);
   }
-  Vector3<R> force_accumulator(std::size_t i) const
+  [[nodiscard]] Vector3<R> force_accumulator(std::size_t i) const
       noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_forces {
     if (!this->valid_index("force_accumulator", i)) return {};
     const typename Base::Arrays& a = this->arrays();

@@ -33,7 +33,7 @@ class SystemHandles : public Base {
                                              detail::HandleTable<std::uint32_t>>::Handle;
 
   /// The handle of particle i: it finds this particle for as long as it lives. O(1).
-  Handle handle(std::size_t i) const
+  [[nodiscard]] Handle handle(std::size_t i) const
       noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_handles {
     return this->valid_index("handle", i) ? this->handles_.handle(this->arrays().handle_slot[i])
                                           : Handle{};
@@ -43,18 +43,19 @@ class SystemHandles : public Base {
   /// holds its next particle's generation, and a free-list link where a live slot holds the
   /// index) matches a handle issued by a copy of this system, or by this system before it was
   /// assigned an earlier state, and must not answer for it.
-  std::optional<std::size_t> find(
+  [[nodiscard]] std::optional<std::size_t> find(
       const Handle& handle) const noexcept requires Base::Layout::has_handles {
     const std::optional<std::size_t> i = this->handles_.find(handle);
     if (i && *i < this->size() && this->arrays().handle_slot[*i] == handle.slot) return i;
     return std::nullopt;
   }
   /// True while the particle `handle` names is alive.
-  bool contains(const Handle& handle) const noexcept requires Base::Layout::has_handles {
+  [[nodiscard]] bool contains(
+      const Handle& handle) const noexcept requires Base::Layout::has_handles {
     return find(handle).has_value();
   }
   /// Bytes of the slot table beside the block (8 a slot with std::uint32_t generations).
-  std::size_t handle_table_bytes() const noexcept requires Base::Layout::has_handles {
+  [[nodiscard]] std::size_t handle_table_bytes() const noexcept requires Base::Layout::has_handles {
     return this->handles_.bytes();
   }
 };

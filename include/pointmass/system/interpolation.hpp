@@ -36,7 +36,7 @@ class SystemInterpolation : public Base {
  public:
   /// Particle i's position column before the last step (its spawn or set_position position
   /// if it has not stepped since; for Compensated positions, the float part).
-  Vector3<position_element> previous_position(std::size_t i) const
+  [[nodiscard]] Vector3<position_element> previous_position(std::size_t i) const
       noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_interpolation {
     if (!this->valid_index("previous_position", i)) return {};
     const auto& a = this->arrays();
@@ -45,7 +45,7 @@ class SystemInterpolation : public Base {
   /// Particle i's position at the fraction `alpha` in [0, 1] of the last step: alpha 0 gives
   /// the previous position and 1 the current one, bit for bit; between them
   /// previous + (current - previous) alpha, in the position columns' element type.
-  Vector3<position_element> interpolated_position(
+  [[nodiscard]] Vector3<position_element> interpolated_position(
       std::size_t i, R alpha) const requires Base::Layout::has_interpolation {
     if (!detail::check_index("interpolated_position", i, this->size()) ||
         !detail::check_fraction("interpolated_position", "alpha", alpha)) {

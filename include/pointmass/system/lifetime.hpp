@@ -28,10 +28,11 @@ class SystemLifetime : public Base {
   using R = typename Base::R;
 
  public:
-  R age(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_lifetime {
+  [[nodiscard]] R age(std::size_t i) const
+      noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_lifetime {
     return this->valid_index("age", i) ? this->arrays().age[i] : R(0);
   }
-  R lifetime(std::size_t i) const
+  [[nodiscard]] R lifetime(std::size_t i) const
       noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_lifetime {
     return this->valid_index("lifetime", i) ? this->arrays().lifetime[i] : R(0);
   }
