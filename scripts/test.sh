@@ -1,38 +1,59 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSL-1.0
-# The whole test suite, as CI runs it: installs what is missing, then builds and runs every
-# test with g++ (debug, contract checks on), with clang (release), and under AddressSanitizer
-# and UndefinedBehaviorSanitizer (the behaviour tests; the tests of the build itself and the
-# Kokkos step's bit-for-bit comparisons run in the other two). The Kokkos comparisons run for
-# the default damping policy (POINTMASS_TEST_EVERY_KOKKOS_PAIR=ON adds the others: the same
-# kernel, whose arithmetic for every policy pair the batch suite compares with Particle's bit
-# for bit in every configuration). All warnings are errors.
-# To fit two cores, the debug builds carry line tables only (-g1) and the sanitizers run
-# unoptimised; the benchmarks and their smoke tests are built in the clang configuration,
-# optimised as when they measure; the plain replay of the fuzzing inputs runs in the g++
-# configuration only (clang's libFuzzer run replays them through clang's code, sanitized), and
-# so does the batch suite's build without exceptions (clang builds the rest of that suite).
-# The i386 configuration builds the behaviour tests and the fuzzing replay for 32-bit x86
-# (g++ -m32 with SSE2 arithmetic): a 32-bit size_t in every size, index and handle, and the
-# same bits as on x86-64 (docs/numerics.md, "Determinism"). The aarch64 configuration builds
-# the same for 64-bit ARM with clang (cmake/toolchains/aarch64-linux-gnu-clang.cmake) and runs
-# it under qemu-user: another instruction set, FPCR's flush-to-zero for FlushDenormals, a
-# 113-bit long double, and again the same bits (contraction off, as the determinism rules say).
-# The armv7 configuration runs the core, contract, batch and precision suites for 32-bit ARM,
-# under qemu-user too: a long double that is double itself, and FPSCR's flush-to-zero.
+# The whole test suite, as CI runs it: installs what is missing, then builds and runs the
+# tests in six configurations. All warnings are errors. Each test case runs in the
+# configurations where it says something new (POINTMASS_TEST_SUITES picks the suites):
+#
+#   gcc       g++ debug, contract checks on: every suite, the tests of the build itself
+#             (compile-fail, documents' code, consumers, headers, vectorisation reports),
+#             the batch and precision suites again at -O3 -march=native without contraction,
+#             the batch suite without exceptions, the fuzzing corpus replayed, the format and
+#             static analysis checks.
+#   clang     clang -O3: the core, contract, batch, forces, precision and hardening suites
+#             (libFuzzer under ASan and UBSan, g++ against clang digests), the benchmarks and
+#             their smoke tests, the compile-fail snippets, the headers and the vectorisation
+#             reports; the other tests of the build (documents, consumers, recipes) say
+#             nothing new about the compiler and run in the gcc configuration.
+#   sanitize  g++ with AddressSanitizer and UndefinedBehaviorSanitizer, unoptimised: the core,
+#             contract, batch, forces and hardening suites, where the library's memory is.
+#   i386      g++ -m32 (SSE2 arithmetic): the core, contract, batch, forces, precision and
+#             hardening suites and the fuzzing replay, with a 32-bit size_t in every size,
+#             index and handle, and the same bits as x86-64 (docs/numerics.md, "Determinism").
+#   aarch64   clang for 64-bit ARM under qemu-user: the core, contract, batch, precision and
+#             hardening suites: another instruction set, FPCR's flush-to-zero, a 113-bit long
+#             double, and again the same bits (contraction off).
+#   armv7     clang for 32-bit ARM under qemu-user: the core, contract, batch and precision
+#             suites: a long double that is double itself, and FPSCR's flush-to-zero.
+#
+# The reference, units, stress, odr and kokkos suites and the examples are arithmetic the
+# instruction set does not change; they run with g++ (and the Kokkos ones for the default
+# damping policy: POINTMASS_TEST_EVERY_KOKKOS_PAIR=ON adds the others).
 #   scripts/test.sh            everything
-#   scripts/test.sh gcc        one configuration: gcc, clang, sanitize, i386, aarch64 or armv7
+#   scripts/test.sh gcc        one configuration (or several): gcc, clang, sanitize, i386,
+#                              aarch64, armv7
+#   scripts/test.sh quick      the inner loop: g++ debug, the core, contract, batch and forces
+#                              suites (cmake --workflow --preset dev, in build/dev)
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
-ensure_packages "${POINTMASS_PACKAGES[@]}"
 
 configurations=("$@")
 ((${#configurations[@]})) || configurations=(gcc clang sanitize i386 aarch64 armv7)
 
-# Under qemu the two 10^6-step flights far from the origin take a minute or more each; their
-# float and double arithmetic is x86-64's bit for bit there (docs/numerics.md, "Determinism"),
-# and every other configuration runs them, so the ARM ones leave them out.
-far_flights="far from the origin: within 1 mm"
+if [[ ${configurations[*]} == quick ]]; then
+  ensure_packages cmake ninja-build g++ libboost-dev doctest-dev libtbb-dev
+  cd "$POINTMASS_ROOT"
+  cmake --preset dev
+  cmake --build --preset dev
+  ctest --preset dev --parallel "$(nproc)"
+  exit
+fi
+ensure_packages "${POINTMASS_PACKAGES[@]}"
+
+# Under qemu the long flights take a minute or more each; their arithmetic is x86-64's bit
+# for bit there (docs/numerics.md, "Determinism"), and the x86 configurations run them.
+qemu_long_cases="far from the origin: within 1 mm|the walk alternates between its size bounds"
+debug=(-DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-g1)
+lean=(-DPOINTMASS_BUILD_BENCHMARKS=OFF -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_CHECKS=OFF)
 times=()
 for configuration in "${configurations[@]}"; do
   started=$SECONDS
@@ -41,59 +62,54 @@ for configuration in "${configurations[@]}"; do
   echo "== $configuration: configure and build in $dir"
   case "$configuration" in
     gcc)
-      configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=Debug \
-        -DCMAKE_CXX_FLAGS_DEBUG=-g1 -DPOINTMASS_BUILD_BENCHMARKS=OFF \
-        -DPOINTMASS_TEST_EVERY_KOKKOS_PAIR=OFF
+      configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ "${debug[@]}" \
+        -DPOINTMASS_BUILD_BENCHMARKS=OFF -DPOINTMASS_TEST_EVERY_KOKKOS_PAIR=OFF \
+        -DPOINTMASS_LINT=ON
       ;;
     clang)
       configure_and_build "$dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release \
-        -DPOINTMASS_FUZZ_REPLAY=OFF -DPOINTMASS_TEST_EVERY_KOKKOS_PAIR=OFF \
-        -DPOINTMASS_NO_EXCEPTIONS_EQUIVALENCE=OFF
+        -DPOINTMASS_BUILD_EXAMPLES=OFF \
+        "-DPOINTMASS_TEST_SUITES=core;contracts;system;forces;precision;hardening" \
+        -DPOINTMASS_FUZZ_REPLAY=OFF -DPOINTMASS_NO_EXCEPTIONS_EQUIVALENCE=OFF
+      ctest_arguments=(--exclude-regex
+        "^(docs|packaging)\.|^hardening\.(packaging\.recipes|cuda|doxygen)$")
       ;;
     sanitize)
-      configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=Debug \
-        -DCMAKE_CXX_FLAGS_DEBUG=-g1 -DPOINTMASS_BUILD_BENCHMARKS=OFF \
-        -DPOINTMASS_BUILD_CHECKS=OFF -DPOINTMASS_TEST_KOKKOS_EQUIVALENCE=OFF \
+      configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ "${debug[@]}" "${lean[@]}" \
+        "-DPOINTMASS_TEST_SUITES=core;contracts;system;forces;hardening" \
         -DPOINTMASS_FUZZ_REPLAY=OFF \
         "-DCMAKE_CXX_FLAGS=-fno-omit-frame-pointer -fsanitize=address,undefined,float-divide-by-zero -fno-sanitize-recover=all"
       ;;
     i386)
-      configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=Debug \
-        -DCMAKE_CXX_FLAGS_DEBUG=-g1 -DPOINTMASS_BUILD_BENCHMARKS=OFF \
-        -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_CHECKS=OFF \
+      configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ "${debug[@]}" "${lean[@]}" \
+        "-DPOINTMASS_TEST_SUITES=core;contracts;system;forces;precision;hardening" \
         "-DCMAKE_CXX_FLAGS=-m32 -msse2 -mfpmath=sse" -DCMAKE_EXE_LINKER_FLAGS=-m32
       ;;
     aarch64)
       configure_and_build "$dir" \
         -DCMAKE_TOOLCHAIN_FILE="$POINTMASS_ROOT/cmake/toolchains/aarch64-linux-gnu-clang.cmake" \
-        -DCMAKE_BUILD_TYPE=Release -DPOINTMASS_BUILD_BENCHMARKS=OFF \
-        -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_CHECKS=OFF \
-        -DCMAKE_CXX_FLAGS=-ffp-contract=off
-      ctest_arguments=(--exclude-regex "$far_flights")
+        -DCMAKE_BUILD_TYPE=Release "${lean[@]}" \
+        "-DPOINTMASS_TEST_SUITES=core;contracts;system;precision;hardening" \
+        -DPOINTMASS_FUZZ_REPLAY=OFF -DCMAKE_CXX_FLAGS=-ffp-contract=off
+      ctest_arguments=(--exclude-regex "$qemu_long_cases")
       ;;
     armv7)
-      suites=(tests/pointmass_tests tests/pointmass_contract_tests
-              tests/system/pointmass_system_tests tests/precision/pointmass_precision_tests)
-      cmake -S "$POINTMASS_ROOT" -B "$dir" -G Ninja \
+      configure_and_build "$dir" \
         -DCMAKE_TOOLCHAIN_FILE="$POINTMASS_ROOT/cmake/toolchains/arm-linux-gnueabihf-clang.cmake" \
-        -DCMAKE_BUILD_TYPE=Release -DPOINTMASS_BUILD_BENCHMARKS=OFF \
-        -DPOINTMASS_BUILD_EXAMPLES=OFF -DPOINTMASS_BUILD_CHECKS=OFF \
+        -DCMAKE_BUILD_TYPE=Release "${lean[@]}" \
+        "-DPOINTMASS_TEST_SUITES=core;contracts;system;precision" \
         "-DCMAKE_CXX_FLAGS=-march=armv7-a -mfpu=vfpv3-d16 -mfloat-abi=hard -ffp-contract=off"
-      cmake --build "$dir" --parallel "$(nproc)" --target "${suites[@]##*/}"
-      echo "== $configuration: test"
-      for suite in "${suites[@]}"; do
-        qemu-arm -L /usr/arm-linux-gnueabihf "$dir/$suite" --test-case-exclude="*$far_flights*"
-      done
+      ctest_arguments=(--exclude-regex "$qemu_long_cases")
       ;;
-    *) echo "unknown configuration: $configuration (gcc, clang, sanitize, i386, aarch64, armv7)" >&2
+    *) echo "unknown configuration: $configuration (gcc, clang, sanitize, i386, aarch64, armv7, quick)" >&2
        exit 2 ;;
   esac
-  if [[ $configuration != armv7 ]]; then
-    echo "== $configuration: test"
-    ctest --test-dir "$dir" --output-on-failure --parallel "$(nproc)" "${ctest_arguments[@]}"
-  fi
+  built=$((SECONDS - started))
+  echo "== $configuration: test"
+  ctest --test-dir "$dir" --output-on-failure --parallel "$(nproc)" "${ctest_arguments[@]}"
   elapsed=$((SECONDS - started))
-  times+=("$configuration $((elapsed / 60))m$((elapsed % 60))s")
+  times+=("$configuration $((elapsed / 60))m$((elapsed % 60))s (build $((built / 60))m$((built % 60))s)")
 done
-# What each configuration took, build and tests (the whole run should stay well under 30 min).
+# What each configuration took, build and tests, and the whole run (budget: 15 min).
 (IFS=';'; echo "== passed: ${times[*]}")
+echo "== total: $((SECONDS / 60))m$((SECONDS % 60))s"
