@@ -110,6 +110,6 @@ for configuration in "${configurations[@]}"; do
   elapsed=$((SECONDS - started))
   times+=("$configuration $((elapsed / 60))m$((elapsed % 60))s (build $((built / 60))m$((built % 60))s)")
 done
-# What each configuration took, build and tests, and the whole run (budget: 15 min).
+# What each configuration took, build and tests, and the whole run.
 (IFS=';'; echo "== passed: ${times[*]}")
 echo "== total: $((SECONDS / 60))m$((SECONDS % 60))s"
