@@ -9,7 +9,7 @@
 //                                                                  one multiply-add  huge counts, bullets in vacuum
 //   PerFrame   (eq. 3.5)   v0 d + a t                      1       one multiply-add  thousands of sparks at a fixed frame rate
 //   PerSecond  (eq. 3.6)   v0 d^t + a t                    1       one exp**         the default: drag independent of frame rate
-//   AccelerateThenDamp     (v0 + a t) d^t                  1       one pow           reproducing the reference engine's trajectories
+//   AccelerateThenDamp     (v0 + a t) d^t                  1       one pow           reproducing Cyclone's trajectories
 //   Exact                  v0 d^t + a (d^t - 1) / ln d     exact   one exp**         projectiles with drag, large or varying steps
 //
 //   * global order against the continuous model dv/dt = a + ln(d) v (per-second d); for
@@ -18,12 +18,12 @@
 //  ** the library's own exponential (detail/exponential.hpp): d^t = e^(t ln d) with ln d
 //     stored when the damping is set, branch-free, so a loop over particles that each have
 //     their own damping vectorises; within 4 ulp of the correctly rounded d^t (measured: 1 ulp,
-//     docs/numerics.md). AccelerateThenDamp calls the C library's pow (powf for float): the
-//     reference engine does, and ported code must get its trajectories bit for bit.
+//     docs/numerics.md). AccelerateThenDamp calls the C library's pow (powf for float): Cyclone
+//     does, and ported code must get its trajectories bit for bit.
 //
-// AccelerateThenDamp is the form the reference engine's code listing computes (it adds a t
-// and then multiplies by d^t); the text's eq. 3.6 damps only the old velocity. They differ by
-// a t (d^t - 1). PerSecond is the default because it is the equation the text derives, and
+// AccelerateThenDamp is the form Cyclone's `Particle::integrate` computes (it adds a t
+// and then multiplies by d^t); eq. 3.6 of Millington damps only the old velocity. They differ by
+// a t (d^t - 1). PerSecond is the default because it is the equation Millington derives, and
 // its terminal velocity under constant a does not depend on the frame rate as strongly; the
 // listing's form stays available so that ported code reproduces its old trajectories.
 //
@@ -197,10 +197,10 @@ struct PerSecond : detail::DampThenAccelerate {
   }
 };
 
-/// The reference engine's code listing: v1 = (v0 + a t) d^t.
+/// Cyclone's `Particle::integrate`: v1 = (v0 + a t) d^t.
 /// Adds the acceleration first and damps the sum, so it differs from eq. 3.6 by
 /// a t (d^t - 1). First order. One power function a step. Choose it to reproduce
-/// trajectories of code ported from the reference engine: for that it keeps the C library's
+/// trajectories of code ported from Cyclone: for that it keeps the C library's
 /// pow (powf for float), which the engine calls, rather than the library's own exponential
 /// (1 ulp from the correctly rounded d^t, so not always powf's result). The price is a call
 /// per particle and step in a batch with per-particle damping, which does not vectorise.

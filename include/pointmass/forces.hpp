@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // pointmass/forces.hpp — force generators and the registry that applies them each step: the
-// umbrella of include/pointmass/forces/. What each generator computes, where the reference
-// engine's differ, the ranges, the stiff spring and the registry's ownership rules:
+// umbrella of include/pointmass/forces/. What each generator computes, where Cyclone's
+// differ, the ranges, the stiff spring and the registry's ownership rules:
 // docs/forces.md.
 //
 //   forces/bodies.hpp      what a generator acts on: PlainBody, SteppableBody, Bodies concepts;
@@ -12,7 +12,7 @@
 //   forces/generators.hpp  Gravity, Drag, AnchoredSpring/Bungee, Spring/Bungee, Buoyancy,
 //                          LinkSprings/LinkBungees and apply_links
 //   forces/oscillator.hpp  damped_oscillator (closed form), StiffSpring (advance: exact step),
-//                          PositionOnlyStiffSpring (the reference engine's force form)
+//                          PositionOnlyStiffSpring (Cyclone's force form)
 //   forces/registry.hpp    ForceRegistry (owning and non-owning registrations)
 //   detail/validate.hpp       the argument checks (shared with Particle and ParticleSystem)
 //

@@ -6,7 +6,7 @@
 // 9.807 m/s^2 (the scientific mean), and what games use for a livelier feel: 15 (shooters)
 // and 20 (driving games).
 //
-// Owns: gravity(g) and the text's values of g.
+// Owns: gravity(g) and Millington's values of g.
 // Must not include: anything but config.hpp, real.hpp and vector3.hpp.
 #pragma once
 

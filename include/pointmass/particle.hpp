@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // pointmass/particle.hpp — the point mass and its integrator.
 //
-//   pointmass::Particle<float>                       the seed's engine: per-second damping,
+//   pointmass::Particle<float>                       Cyclone's engine: per-second damping,
 //                                                    position p + v t
 //   pointmass::Particle<double, damping::PerFrame, position::Kinematic>
 //   pointmass::BasicParticle<Quantities, D, P>       the same over any QuantitySet (units.hpp
@@ -125,7 +125,7 @@ class BasicParticle {
   static constexpr bool caches_factors = detail::keeps_factors_v<D, real>;
   /// True when the position is stored in the arithmetic's own precision (as today).
   static constexpr bool plain_position = std::is_same_v<position_precision, real>;
-  /// True for the reference engine's own equations (AccelerateThenDamp with Euler, plain
+  /// True for Cyclone's own equations (AccelerateThenDamp with Euler, plain
   /// numbers and positions), whose factor is a call to the C library's power function: a new
   /// step length then takes the engine's order (integrate).
   static constexpr bool engine_order = std::is_same_v<D, damping::AccelerateThenDamp> &&

@@ -6,7 +6,7 @@
 // factors, and returns the new position:
 //
 //   policy        p1                              order*  when to choose
-//   Euler         p0 + v0 t                       1       the default, the text's short form: cheapest
+//   Euler         p0 + v0 t                       1       the default, Millington's short form: cheapest
 //   Kinematic     p0 + v0 t + a t^2 / 2           1 (exact for constant a without damping)
 //                                                         short bursts of huge acceleration
 //   SemiImplicit  p0 + v1 t                       1       springs and orbits: symplectic Euler,

@@ -7,7 +7,7 @@
 // change the element type are free functions; compound assignment keeps the type.
 //
 // Products: `v * s` scales; `component_product(a, b)` multiplies element by element (the
-// reference engine's `%` operator is the cross product there; here it is spelled `cross`).
+// Cyclone's `%` operator is the cross product there; here it is spelled `cross`).
 //
 // `magnitude` and `normalized` work for every finite vector: when x^2 + y^2 + z^2 would
 // overflow (components from about 1e19 in float, 1e154 in double) or underflow and lose digits
@@ -191,7 +191,7 @@ struct Vector3 {
     return *this;
   }
 
-  /// *this += v * scale, in place (the reference engine's addScaledVector).
+  /// *this += v * scale, in place (Cyclone's `addScaledVector`).
   template <class U, class S>
   POINTMASS_HD constexpr Vector3& add_scaled_vector(const Vector3<U>& v, const S& scale) noexcept {
     x += v.x * scale;

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
 // pointmass/extras/scenes.hpp — ready-made scenes (not in the umbrella header: include it
-// explicitly): the reference engine's ballistic shots and a
-// mass on a spring. The tests, examples and benchmarks all use these, so every accuracy and
+// explicitly): Cyclone's ballistic shots and a mass on a spring. The tests, examples and benchmarks all use these, so every accuracy and
 // speed figure the project reports is about the same work.
 #pragma once
 
@@ -15,7 +14,7 @@
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::scenes {
 
-/// One of the reference engine's ballistic shots: launched from `origin` with `velocity`,
+/// One of Cyclone's ballistic shots: launched from `origin` with `velocity`,
 /// under constant `acceleration` (its gravity), with per-second `damping`.
 template <Real R>
 struct BallisticShot {

@@ -219,7 +219,7 @@ using AnchoredSpring = BasicAnchoredSpring<R, false>;
 template <Real R>
 using AnchoredBungee = BasicAnchoredSpring<R, true>;
 
-/// A spring (or bungee) between two bodies, as the reference engine has it: registered with
+/// A spring (or bungee) between two bodies, as Cyclone has it: registered with
 /// one body, it pulls that body towards `other`; register a second one, with the ends swapped,
 /// for the other body. In a batch, `apply_links` does both ends at once. The other body is
 /// not owned: it must outlive the spring's use, and a temporary (a particle returned by value,

@@ -5,7 +5,7 @@
 // Owns: OscillatorState, damped_oscillator (the exact solution of x'' = -w0^2 x - 2 gamma x'),
 // StiffSpringParameters, StiffSpring (a step that sets a body's position and velocity from
 // the closed form: exact at any step when the spring is the only force) and
-// PositionOnlyStiffSpring (the reference engine's "fake spring" as a force: right positions
+// PositionOnlyStiffSpring (Cyclone's "fake spring" as a force: right positions
 // for one step, a period sqrt(2) times too long; kept for compatibility).
 // Must not include: particle.hpp, particle_system.hpp (the bodies are concepts, bodies.hpp),
 // generators.hpp or registry.hpp.
@@ -314,7 +314,7 @@ class StiffSpring : public StiffSpringParameters<R> {
   }
 };
 
-/// The reference engine's "fake" stiff spring as a force, kept for compatibility; prefer
+/// Cyclone's "fake" stiff spring as a force, kept for compatibility; prefer
 /// StiffSpring::advance. What it does wrong: for a step t it adds the force that brings a body
 /// with position::SemiImplicit and damping::None to the closed form's position,
 ///   f = m [ (x(t) - x0) / t - v0 ] / t,
@@ -322,7 +322,7 @@ class StiffSpring : public StiffSpringParameters<R> {
 /// velocity it leaves is the step's mean velocity, which the next step takes as the initial
 /// velocity: the body oscillates with a period sqrt(2) times the true one at every step size
 /// (it does not converge as t shrinks) and a wrong amplitude. What it does right, unlike the
-/// reference engine's: no NaN when over-damped (sqrt(4 k - c^2) there), a force when
+/// Cyclone's: no NaN when over-damped (sqrt(4 k - c^2) there), a force when
 /// critically damped. Stability of its step map: see docs/forces.md.
 /// The difference quotient is not formed (it cancels when w0 t is small, to nothing once
 /// w0^2 t^2 is below epsilon, whatever gamma t is): the force is computed as

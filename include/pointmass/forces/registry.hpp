@@ -27,7 +27,7 @@ concept GeneratorFor = requires(G& g, P& p, typename P::real t) {
   forces::update_force(g, p, t);
 };
 
-/// (particle, generator) pairs, like the reference engine's registry; `update_forces(t)` adds
+/// (particle, generator) pairs, like Cyclone's `ParticleForceRegistry`; `update_forces(t)` adds
 /// every generator's force to its particle. Two ways to register:
 ///   * owning (the safe default): `add_owned(particle, generator)` stores a copy (or a moved
 ///     generator) and `emplace<G>(particle, args...)` builds one in place; both return a
