@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // pointmass/particle.hpp — the point mass and its integrator.
 //
-//   pointmass::Particle<float>                       Cyclone's engine: per-second damping,
+//   pointmass::Particle<float>                       the defaults: per-second damping,
 //                                                    position p + v t
 //   pointmass::Particle<double, damping::PerFrame, position::Kinematic>
 //   pointmass::BasicParticle<Quantities, D, P>       the same over any QuantitySet (units.hpp
