@@ -15,6 +15,7 @@ POINTMASS_PACKAGES=(cmake ninja-build g++ clang libclang-rt-14-dev libboost-dev 
                     libbenchmark-dev libtbb-dev gnuplot-nox doxygen pkg-config
                     libglm-dev libeigen3-dev  # test-only (tests/packaging/user_vectors)
                     libtrilinos-kokkos-dev  # pointmass::kokkos and tests/kokkos (Serial backend)
+                    clang-format-14 clang-tidy-14  # tests/lint (POINTMASS_LINT)
                     "${POINTMASS_CROSS_PACKAGES[@]}")
 
 # Installs those of the named Debian packages that are missing (apt-get update first, once).
