@@ -556,7 +556,7 @@ class SystemState {
   // Particle i, expired: on_expire(i), then its removal. False when the callback replaced the
   // particles whole (assigned, swapped or moved the system): the pass ends there.
   template <class OnExpire>
-  bool expire_one(std::size_t i, OnExpire& on_expire) {
+  POINTMASS_DETAIL_ALWAYS_INLINE bool expire_one(std::size_t i, OnExpire& on_expire) {
     if constexpr (!std::is_same_v<std::remove_cvref_t<OnExpire>, NoCallback>) {
       const std::uint16_t replacements = replacements_;
       {
