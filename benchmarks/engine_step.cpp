@@ -322,7 +322,7 @@ void BM_BandwidthFullFeatured(benchmark::State& state) {
   const auto count = static_cast<std::size_t>(state.range(0));
   System system(count);
   for (std::size_t i = 0; i < count; ++i) system.spawn({}, {});
-  const auto& a = system.arrays();
+  const auto& a = pointmass::detail::SystemAccess::arrays(system);
   const R c = duration<R>();
   for (auto _ : state) {
     R* __restrict px = a.position_x;
@@ -370,17 +370,17 @@ void BM_System(benchmark::State& state) {
   System system(count);
   const auto s = starts<R>(count);
   for (std::size_t i = 0; i < count; ++i) system.spawn(s[i].position, s[i].velocity);
-  if constexpr (System::per_particle_damping) {
+  if constexpr (System::template has<pointmass::features::PerParticleDamping>) {
     for (std::size_t i = 0; i < count; ++i) system.set_damping(i, damping_value<R>);
   } else {
     system.set_damping(damping_value<R>);
   }
-  if constexpr (System::per_particle_acceleration) {
+  if constexpr (System::template has<pointmass::features::PerParticleAcceleration>) {
     for (std::size_t i = 0; i < count; ++i) system.set_acceleration(i, gravity_vector<R>);
   } else {
     system.set_acceleration(gravity_vector<R>);
   }
-  if constexpr (System::has_forces) {
+  if constexpr (System::template has<pointmass::features::ForceAccumulator>) {
     for (std::size_t i = 0; i < count; ++i) system.set_mass(i, s[i].mass);
   }
   const R t = duration<R>();
@@ -388,7 +388,7 @@ void BM_System(benchmark::State& state) {
   std::int64_t steps = 0;
   for (auto _ : state) {
     system.step(t);
-    benchmark::DoNotOptimize(system.position_x().data());
+    benchmark::DoNotOptimize(system.template column<pointmass::Column::position_x>().data());
     benchmark::ClobberMemory();
     refresh_now_and_then(state, steps, [&] { start.restore(system); });
   }

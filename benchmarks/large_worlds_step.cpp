@@ -168,7 +168,8 @@ void hand_sparks_loop(benchmark::State& state) {
   const Vector3<float> g = gravity<float>();
   const std::vector<float> start_x(a.v[0], a.v[0] + a.n), start_y(a.v[1], a.v[1] + a.n),
       start_z(a.v[2], a.v[2] + a.n);  // the velocities, to put back
-  const bool alternating = W == Walk::like_the_system && SparksOf<S>::alternates(a.n);
+  const bool alternating = W == Walk::like_the_system &&
+                           pointmass::detail::SystemAccess::Kernel<SparksOf<S>>::alternates(a.n);
   // The particles [begin, begin + count).
   const auto step = [&](std::size_t begin, std::size_t count) {
     const auto at = [begin](auto* column) { return column ? column + begin : column; };
@@ -178,7 +179,8 @@ void hand_sparks_loop(benchmark::State& state) {
   std::int64_t steps = 0;
   for (auto _ : state) {
     if (alternating && steps % 2 == 1) {
-      constexpr std::size_t chunk = SparksOf<S>::backward_chunk;
+      constexpr std::size_t chunk =
+          pointmass::detail::SystemAccess::Kernel<SparksOf<S>>::backward_chunk;
       std::size_t end = a.n - a.n % chunk;
       step(end, a.n - end);
       while (end != 0) {

@@ -52,9 +52,9 @@ System make_system(std::size_t count) {
 // of a system whose step never kept any).
 template <class System>
 void step_afresh(System& system, typename System::real t) {
-  if (system.begin_step(t)) {
-    System::step_range(system.arrays(), 0, system.size(), system.step_parameters(t));
-    system.finish_step();
+  if (auto view = system.begin_step(t)) {
+    view.step_range(0, view.size());
+    system.finish_step(std::move(view));
   }
 }
 
@@ -62,7 +62,8 @@ void step_afresh(System& system, typename System::real t) {
 template <class System, bool Afresh>
 void step_loop(benchmark::State& state) {
   using R = typename System::real;
-  static_assert(!System::alternates(512), "the loops compared walk forwards");
+  static_assert(!pointmass::detail::SystemAccess::Kernel<System>::alternates(512),
+                "the loops compared walk forwards");
   const auto count = static_cast<std::size_t>(state.range(0));
   System system = make_system<System>(count);
   const SavedVelocities<System> start(system);

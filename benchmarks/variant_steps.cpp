@@ -176,9 +176,12 @@ constexpr long system_frames = 300;
 
 template <class S, class D, class P>
 void restore(ParticleSystem<S, D, P>& system, const ParticleSystem<S, D, P>& launched) {
-  std::ranges::copy(launched.position_x(), system.position_x().begin());
-  std::ranges::copy(launched.position_y(), system.position_y().begin());
-  std::ranges::copy(launched.position_z(), system.position_z().begin());
+  std::ranges::copy(launched.template column<pointmass::Column::position_x>(),
+                    system.template column<pointmass::Column::position_x>().begin());
+  std::ranges::copy(launched.template column<pointmass::Column::position_y>(),
+                    system.template column<pointmass::Column::position_y>().begin());
+  std::ranges::copy(launched.template column<pointmass::Column::position_z>(),
+                    system.template column<pointmass::Column::position_z>().begin());
   if constexpr (ParticleSystem<S, D, P>::template stores<Column::position_error_x>) {
     std::ranges::copy(launched.template column<Column::position_error_x>(),
                       system.template column<Column::position_error_x>().begin());
@@ -187,9 +190,12 @@ void restore(ParticleSystem<S, D, P>& system, const ParticleSystem<S, D, P>& lau
     std::ranges::copy(launched.template column<Column::position_error_z>(),
                       system.template column<Column::position_error_z>().begin());
   }
-  std::ranges::copy(launched.velocity_x(), system.velocity_x().begin());
-  std::ranges::copy(launched.velocity_y(), system.velocity_y().begin());
-  std::ranges::copy(launched.velocity_z(), system.velocity_z().begin());
+  std::ranges::copy(launched.template column<pointmass::Column::velocity_x>(),
+                    system.template column<pointmass::Column::velocity_x>().begin());
+  std::ranges::copy(launched.template column<pointmass::Column::velocity_y>(),
+                    system.template column<pointmass::Column::velocity_y>().begin());
+  std::ranges::copy(launched.template column<pointmass::Column::velocity_z>(),
+                    system.template column<pointmass::Column::velocity_z>().begin());
 }
 
 template <class S, class D, class P>
@@ -201,7 +207,7 @@ void BM_System(benchmark::State& state) {
   for (auto _ : state) {
     restore(system, launched);
     for (long frame = 0; frame < system_frames; ++frame) system.step(t);
-    benchmark::DoNotOptimize(system.position_x().data());
+    benchmark::DoNotOptimize(system.template column<pointmass::Column::position_x>().data());
     benchmark::ClobberMemory();
   }
   report_steps(state, static_cast<double>(system_frames * static_cast<long>(system_particles)));

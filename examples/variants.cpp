@@ -78,7 +78,8 @@ void particle_rows(const char* real) {
 template <class System>
 void system_row(const char* features) {
   std::printf("ParticleSystem<float, PerSecond, Euler%-44s> %3zu bytes per particle, %2zu arrays\n",
-              features, System::storage_bytes_per_particle, System::array_count);
+              features, System::storage_bytes_per_particle,
+              pointmass::detail::SystemAccess::Layout<System>::array_count);
 }
 
 }  // namespace

@@ -137,23 +137,53 @@ TEST_CASE_TEMPLATE(
   });
   CAPTURE(capacity);
   CAPTURE(total);
-  CHECK(arrays_seen == System::array_count);
+  CHECK(arrays_seen == pointmass::detail::SystemAccess::Layout<System>::array_count);
   CHECK(total <= std::size_t(PTRDIFF_MAX));
 }
 
-TEST_CASE("a copy's arrays() has the copy's size, so a step_particle loop over it steps all") {
+TEST_CASE("a copy's step view has the copy's size, so a step_particle loop over it steps all") {
   const Sparks original = three_particles<Sparks>();
   Sparks copy = original;
-  REQUIRE(copy.arrays().size == 3);
-  const auto parameters = copy.step_parameters(0.5f);
-  for (std::size_t i = 0; i < copy.arrays().size; ++i) {
-    Sparks::step_particle(copy.arrays(), i, parameters);
-  }
+  auto view = copy.begin_step(0.5f);
+  REQUIRE(view.size() == 3);
+  REQUIRE(view.arrays().size == 3);
+  for (std::size_t i = 0; i < view.size(); ++i) view.step_particle(i);
+  copy.finish_step(std::move(view));
   Sparks stepped = original;
   stepped.step(0.5f);
   CHECK(same_particles(copy, stepped));
   Sparks empty_copy = Sparks{};
-  CHECK(empty_copy.arrays().size == 0);
+  CHECK(empty_copy.begin_step(0.5f).size() == 0);
+}
+
+TEST_CASE("finish_step refuses a view of another system, finished, or over changed particles") {
+  Aging a = three_particles<Aging>();
+  a.set_lifetime(1, 0.01f);
+  Aging b = a;
+  const Aging b_before = b;
+  auto view = a.begin_step(0.02f);
+  for (std::size_t i = 0; i < view.size(); ++i) view.step_particle(i);
+  CHECK(invalid_argument_of([&] {
+          view.step_particle(3);
+        }).find("StepView::step_particle: argument 'index' = 3 must be < size()") !=
+        std::string::npos);
+  CHECK(invalid_argument_of([&] { b.finish_step(std::move(view)); })
+            .find("finish_step: argument 'view' = 3 must be from this system's begin_step, not "
+                  "finished yet") != std::string::npos);
+  CHECK(same_particles(b, b_before));                                 // nothing expired there
+  CHECK(invalid_argument_of([&] { a.finish_step(std::move(view)); })  // moved from: finished
+            .find("must be from this system's begin_step") != std::string::npos);
+  CHECK(a.size() == 3);  // the particle whose lifetime is over is still there
+  auto stale = a.begin_step(0.02f);
+  a.spawn({}, {});
+  CHECK(invalid_argument_of([&] {
+          a.finish_step(std::move(stale));
+        }).find("finish_step: argument 'view' = 3 must be over the particles begin_step saw") !=
+        std::string::npos);
+  CHECK(a.size() == 4);
+  auto fresh = a.begin_step(0.02f);
+  a.finish_step(std::move(fresh));
+  CHECK(a.size() == 3);  // now it expires
 }
 
 TEST_CASE("index reads and writes beyond size() are reported, naming the function and the index") {
@@ -204,22 +234,25 @@ TEST_CASE("index reads and writes beyond size() are reported, naming the functio
 TEST_CASE("step_range and step_range_backward check their range against arrays().size") {
   Sparks system = three_particles<Sparks>();
   const Sparks before = system;
-  const auto parameters = system.step_parameters(0.1f);
+  const auto view = system.begin_step(0.1f);
+  const auto& parameters = view.parameters();
   CHECK(invalid_argument_of([&] {
-          Sparks::step_range(system.arrays(), 0, 4, parameters);
+          view.step_range(0, 4);
         }).find("argument 'end' = 4 must be <= size()") != std::string::npos);
   CHECK(invalid_argument_of([&] {
-          Sparks::step_range(system.arrays(), 2, 1, parameters);
+          view.step_range(2, 1);
         }).find("argument 'begin' = 2 must be <= end") != std::string::npos);
   CHECK(invalid_argument_of([&] {
-          Sparks::step_range_backward(system.arrays(), 2, 1, parameters);
+          pointmass::detail::SystemAccess::Kernel<Sparks>::step_range_backward(
+              pointmass::detail::SystemAccess::arrays(system), 2, 1, parameters);
         }).find("argument 'begin' = 2 must be <= end") != std::string::npos);
   CHECK(invalid_argument_of([&] {
-          Sparks::step_range_backward(system.arrays(), 0, 17, parameters);
+          pointmass::detail::SystemAccess::Kernel<Sparks>::step_range_backward(
+              pointmass::detail::SystemAccess::arrays(system), 0, 17, parameters);
         }).find("argument 'end' = 17 must be <= size()") != std::string::npos);
   CHECK(same_particles(system, before));
   // A valid empty range is fine and changes nothing.
-  Sparks::step_range(system.arrays(), 1, 1, parameters);
+  view.step_range(1, 1);
   CHECK(same_particles(system, before));
 }
 
@@ -284,11 +317,15 @@ TEST_CASE("a removal pass refuses steps and removals from its callback, and outl
   system.set_lifetime(1, 0.01f);
   Game plain = system;
   plain.step(0.02f);
-  std::string step_message, finish_message;
+  std::string step_message, begin_message, finish_message;
+  auto begun = system.begin_step(0.02f);  // finished, wrongly, inside the callback below
   system.step(0.02f, [&](std::size_t) {
     step_message = invalid_argument_of([&] { system.step(0.25f); });
-    finish_message = invalid_argument_of([&] { system.finish_step(); });
+    begin_message = invalid_argument_of([&] { static_cast<void>(system.begin_step(0.25f)); });
+    finish_message = invalid_argument_of([&] { system.finish_step(std::move(begun)); });
   });
+  CHECK(begin_message.find("begin_step: argument 'duration' = 0.25 must be not stepped during "
+                           "an expiry callback") != std::string::npos);
   CHECK(step_message.find("step: argument 'duration' = 0.25 must be not stepped during an "
                           "expiry callback") != std::string::npos);
   CHECK(finish_message.find("finish_step: argument 'particles' = 3 must be not stepped during "
@@ -693,8 +730,8 @@ TEST_CASE_TEMPLATE(
       (axis == 0 ? origin.x : axis == 1 ? origin.y : origin.z) = bad;
       std::vector<Vector3<float>> buffer(2, unwritten);
       CHECK(invalid_argument_of([&] {
-              system.positions_relative_to(origin, buffer);
-            }).find("positions_relative_to: argument 'origin'") != std::string::npos);
+              system.copy_positions(std::span(buffer), origin);
+            }).find("copy_positions: argument 'origin'") != std::string::npos);
       CHECK(buffer == std::vector<Vector3<float>>(2, unwritten));
       CHECK(invalid_argument_of([&] {
               (void)system.position_relative_to(1, origin);
@@ -706,7 +743,7 @@ TEST_CASE_TEMPLATE(
   }
   // A finite origin is taken.
   std::vector<Vector3<float>> buffer(2, unwritten);
-  system.positions_relative_to(good, buffer);
+  system.copy_positions(std::span(buffer), good);
   CHECK(buffer[0] == Vector3<float>{0, 2, -3});
   CHECK(buffer[0] == particle.position_relative_to(good));
 }

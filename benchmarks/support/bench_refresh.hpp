@@ -37,13 +37,16 @@ void refresh_now_and_then(benchmark::State& state, std::int64_t& steps, Restore&
 template <class System>
 struct SavedVelocities {
   explicit SavedVelocities(System& system)
-      : x(system.velocity_x().begin(), system.velocity_x().end()),
-        y(system.velocity_y().begin(), system.velocity_y().end()),
-        z(system.velocity_z().begin(), system.velocity_z().end()) {}
+      : x(system.template column<pointmass::Column::velocity_x>().begin(),
+          system.template column<pointmass::Column::velocity_x>().end()),
+        y(system.template column<pointmass::Column::velocity_y>().begin(),
+          system.template column<pointmass::Column::velocity_y>().end()),
+        z(system.template column<pointmass::Column::velocity_z>().begin(),
+          system.template column<pointmass::Column::velocity_z>().end()) {}
   void restore(System& system) const {
-    std::copy(x.begin(), x.end(), system.velocity_x().begin());
-    std::copy(y.begin(), y.end(), system.velocity_y().begin());
-    std::copy(z.begin(), z.end(), system.velocity_z().begin());
+    std::copy(x.begin(), x.end(), system.template column<pointmass::Column::velocity_x>().begin());
+    std::copy(y.begin(), y.end(), system.template column<pointmass::Column::velocity_y>().begin());
+    std::copy(z.begin(), z.end(), system.template column<pointmass::Column::velocity_z>().begin());
   }
   std::vector<typename System::real> x, y, z;
 };

@@ -136,6 +136,18 @@ inline constexpr bool is_feature_v =
                features::ForceAccumulator, features::Lifetime, features::Interpolation> ||
     is_user_column<T>::value || is_handles<T>::value;
 
+/// True when `Feature` names `Configured`, one of a system's features: the same tag, any
+/// handles for features::Handles (whatever their generations), or the tag of a user column.
+template <class Feature, class Configured>
+inline constexpr bool names_feature_v = std::is_same_v<Feature, Configured> ||
+                                        (is_handles<Feature>::value &&
+                                         is_handles<Configured>::value);
+template <class Tag, class T>
+inline constexpr bool names_feature_v<Tag, features::Column<Tag, T>> = true;
+/// ParticleSystem::has<Feature>.
+template <class Feature, class... Features>
+inline constexpr bool has_feature_v = (names_feature_v<Feature, Features> || ...);
+
 /// The handles feature among Features (void when there is none).
 template <class... Features>
 struct handles_of {

@@ -16,11 +16,11 @@
 // ParticleSystem (every array the configuration stores, found through the layout's table,
 // detail::SystemLayout::for_each_array and for_each_array_pair: an array added to the table
 // comes along without an edit here), steps them with Kokkos::parallel_for over
-// ParticleSystem::step_particle in any execution space that can reach MemorySpace (on the
+// ParticleSystem::StepView::step_particle in any execution space that can reach MemorySpace (on the
 // host by chunks through the library's vectorised loop over step_particle), and
 // expires particles (Lifetime) in that execution space too.
 //
-// The same results. Every particle's step is ParticleSystem::step_particle, the function
+// The same results. Every particle's step is ParticleSystem::StepView::step_particle, the function
 // ParticleSystem::step runs, so the arrays equal those of system.step(t) bit for bit when the
 // compiler evaluates both the same way: on the host, build without contraction into fused
 // multiply-adds (-ffp-contract=off; g++ in GNU mode contracts by default where the target
@@ -64,35 +64,35 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 namespace detail {
 
-// The table of a ParticleSystem configuration, from its kernel base (SystemKernel<R, D, P,
-// Layout>), so that whatever selects the arrays (feature tags, user columns) is the table's
-// business and not this header's.
-template <Real R, class D, class P, class Layout>
-Layout layout_of(const SystemKernel<R, D, P, Layout>*);
+// The table and the step kernel of a ParticleSystem configuration, so that whatever selects
+// the arrays (feature tags, user columns) is the table's business and not this header's.
 template <class System>
-using layout_of_t = decltype(layout_of(static_cast<const System*>(nullptr)));
+using layout_of_t = SystemAccess::Layout<System>;
+template <class System>
+using kernel_of_t = SystemAccess::Kernel<System>;
 
 // The Kokkos loops, as functors (plain structs: no extended lambdas needed under nvcc).
 template <class System>
 struct KokkosStep {
-  typename System::Arrays arrays;
-  typename System::StepParameters parameters;
+  typename System::StepView::Arrays arrays;
+  typename System::StepView::Parameters parameters;
   KOKKOS_INLINE_FUNCTION void operator()(std::size_t i) const {
-    System::step_particle(arrays, i, parameters);
+    System::StepView::step_particle(arrays, i, parameters);
   }
 };
 
 // The host backends' loop: chunks of particles, each through the library's vectorised loop
-// (System::step_range, step_particle over the chunk), as pointmass::step(par_unseq, ...) does.
+// (the kernel's step_range, step_particle over the chunk), as pointmass::step(par_unseq, ...)
+// does.
 template <class System>
 struct KokkosStepChunks {
   static constexpr std::size_t chunk = 16384;
-  typename System::Arrays arrays;
-  typename System::StepParameters parameters;
+  typename System::StepView::Arrays arrays;
+  typename System::StepView::Parameters parameters;
   void operator()(std::size_t c) const {
     const std::size_t begin = c * chunk;
     const std::size_t end = arrays.size - begin < chunk ? arrays.size : begin + chunk;
-    System::step_range(arrays, begin, end, parameters);
+    kernel_of_t<System>::step_range(arrays, begin, end, parameters);
   }
 };
 
@@ -104,10 +104,10 @@ inline constexpr bool kokkos_host_space_v =
                                typename ExecutionSpace::memory_space>::accessible;
 
 /// One step of `arrays` in `space`, one particle per index of a Kokkos::parallel_for over
-/// System::step_particle: KokkosSystem::step's loop on a device.
+/// StepView::step_particle: KokkosSystem::step's loop on a device.
 template <class System, class ExecutionSpace>
-void kokkos_step_each(const ExecutionSpace& space, const typename System::Arrays& arrays,
-                      const typename System::StepParameters& parameters) {
+void kokkos_step_each(const ExecutionSpace& space, const typename System::StepView::Arrays& arrays,
+                      const typename System::StepView::Parameters& parameters) {
   Kokkos::parallel_for(
       "pointmass::KokkosSystem::step",
       Kokkos::RangePolicy<ExecutionSpace, Kokkos::IndexType<std::size_t>>(space, 0, arrays.size),
@@ -117,8 +117,9 @@ void kokkos_step_each(const ExecutionSpace& space, const typename System::Arrays
 /// One step of `arrays` in `space`, by chunks of 16,384 particles through the vectorised
 /// loop: KokkosSystem::step's loop on the host. The same results as kokkos_step_each.
 template <class System, class ExecutionSpace>
-void kokkos_step_chunks(const ExecutionSpace& space, const typename System::Arrays& arrays,
-                        const typename System::StepParameters& parameters) {
+void kokkos_step_chunks(const ExecutionSpace& space,
+                        const typename System::StepView::Arrays& arrays,
+                        const typename System::StepView::Parameters& parameters) {
   constexpr std::size_t chunk = KokkosStepChunks<System>::chunk;
   Kokkos::parallel_for("pointmass::KokkosSystem::step",
                        Kokkos::RangePolicy<ExecutionSpace, Kokkos::IndexType<std::size_t>>(
@@ -126,12 +127,18 @@ void kokkos_step_chunks(const ExecutionSpace& space, const typename System::Arra
                        KokkosStepChunks<System>{arrays, parameters});
 }
 
+// An age that reached a finite lifetime (ParticleSystem's expiry test).
+template <class R>
+KOKKOS_INLINE_FUNCTION constexpr bool expired_at(R age, R lifetime) {
+  return (age >= lifetime) & (lifetime < real_infinity<R>);
+}
+
 template <class System>
 struct KokkosCountExpired {
   const typename System::real* age;
   const typename System::real* lifetime;
   KOKKOS_INLINE_FUNCTION void operator()(std::size_t i, std::size_t& count) const {
-    count += System::expired(age[i], lifetime[i]) ? 1 : 0;
+    count += expired_at(age[i], lifetime[i]) ? 1 : 0;
   }
 };
 
@@ -145,7 +152,7 @@ struct KokkosRankSurvivors {
   IndexView sources;
   KOKKOS_INLINE_FUNCTION void operator()(std::size_t u, std::size_t& rank, bool final) const {
     const std::size_t j = size - 1 - u;
-    if (System::expired(age[j], lifetime[j])) return;
+    if (expired_at(age[j], lifetime[j])) return;
     if (final) sources(rank) = j;
     ++rank;
   }
@@ -156,10 +163,10 @@ struct KokkosRankSurvivors {
 template <class System, class IndexView>
 struct KokkosFillHoles {
   using Layout = layout_of_t<System>;
-  typename System::Arrays arrays;
+  typename System::StepView::Arrays arrays;
   IndexView sources;
   KOKKOS_INLINE_FUNCTION void operator()(std::size_t i, std::size_t& rank, bool final) const {
-    if (!System::expired(arrays.age[i], arrays.lifetime[i])) return;
+    if (!expired_at(arrays.age[i], arrays.lifetime[i])) return;
     if (final) {
       const std::size_t from = sources(rank);
       Layout::for_each_array(arrays, [&](auto* array) { array[i] = array[from]; });
@@ -194,10 +201,10 @@ class KokkosSystem {
   using memory_space = MemorySpace;
   using real = typename System::real;
   /// Raw pointers into MemorySpace (nullptr for arrays not stored) and the live count.
-  using Arrays = typename System::Arrays;
-  using StepParameters = typename System::StepParameters;
+  using Arrays = typename System::StepView::Arrays;
+  using StepParameters = typename System::StepView::Parameters;
   template <Column C>
-  using element_t = typename System::template element_t<C>;
+  using element_t = typename Layout::template element_t<C>;
   /// An unmanaged View of one array's live particles.
   template <Column C>
   using View = Unmanaged<element_t<C>>;
@@ -224,10 +231,11 @@ class KokkosSystem {
     reserve(system.size());
     arrays_.size = system.size();
     const std::size_t count = size();
-    Layout::for_each_array_pair(arrays_, system.arrays(), [count](auto* to, auto* from) {
-      using T = std::remove_pointer_t<decltype(to)>;
-      Kokkos::deep_copy(Unmanaged<T>(to, count), HostUnmanaged<T>(from, count));
-    });
+    Layout::for_each_array_pair(
+        arrays_, detail::SystemAccess::arrays(system), [count](auto* to, auto* from) {
+          using T = std::remove_pointer_t<decltype(to)>;
+          Kokkos::deep_copy(Unmanaged<T>(to, count), HostUnmanaged<T>(from, count));
+        });
     copy_uniform(system, settings_);
   }
 
@@ -240,13 +248,13 @@ class KokkosSystem {
     while (system.size() < size()) {
       system.spawn(Vector3<typename System::position_value>{}, Vector3<real>{});
     }
-    Arrays host = system.arrays();
+    Arrays host = detail::SystemAccess::arrays(system);
     const std::size_t count = size();
     Layout::for_each_array_pair(host, arrays_, [count](auto* to, auto* from) {
       using T = std::remove_pointer_t<decltype(to)>;
       Kokkos::deep_copy(HostUnmanaged<T>(to, count), Unmanaged<T>(from, count));
     });
-    system.arrays_changed();
+    detail::SystemAccess::arrays_changed(system);
     copy_uniform(settings_, system);
   }
 
@@ -266,7 +274,7 @@ class KokkosSystem {
     *this = std::move(grown);
   }
 
-  /// The raw arrays in MemorySpace, for loops of your own over System::step_particle.
+  /// The raw arrays in MemorySpace, for loops of your own over StepView::step_particle.
   const Arrays& arrays() const noexcept { return arrays_; }
   /// Array C of the live particles, as an unmanaged View in MemorySpace.
   // clang-format off
@@ -283,12 +291,12 @@ class KokkosSystem {
   const System& settings() const noexcept { return settings_; }
   /// What every particle's step of `duration` shares (settings().step_parameters).
   StepParameters step_parameters(real duration) const noexcept {
-    return settings_.step_parameters(duration);
+    return detail::SystemAccess::step_parameters(settings_, duration);
   }
 
   /// Advances every particle by `duration` seconds in `space` (Kokkos::parallel_for over
-  /// System::step_particle: on a device one particle per index; on the host by chunks of
-  /// 16,384 through the library's vectorised loop, System::step_range: a loop of one call
+  /// StepView::step_particle: on a device one particle per index; on the host by chunks of
+  /// 16,384 through the library's vectorised loop, the kernel's step_range: a loop of one call
   /// per index is not vectorised, and measured half the speed in float), then expires those whose
   /// lifetime is over (Lifetime), as
   /// ParticleSystem::step does, with its results. A negative, NaN or infinite duration is a
@@ -323,7 +331,7 @@ class KokkosSystem {
   /// by step; call it after stepping through step_particle in a loop of your own.
   template <class ExecutionSpace>
   std::size_t expire(const ExecutionSpace& space) {
-    if constexpr (!System::has_lifetime) {
+    if constexpr (!Layout::has_lifetime) {
       static_cast<void>(space);
       return 0;
     } else {
@@ -363,8 +371,9 @@ class KokkosSystem {
   }
 
   static void copy_uniform(const System& from, System& to) {
-    if constexpr (!System::per_particle_acceleration) to.set_acceleration(from.acceleration());
-    if constexpr (System::stores_damping && !System::per_particle_damping) {
+    if constexpr (!Layout::per_particle_acceleration) to.set_acceleration(from.acceleration());
+    if constexpr (!std::is_same_v<typename System::damping_policy, damping::None> &&
+                  !Layout::per_particle_damping) {
       to.set_damping(from.damping());
     }
   }

@@ -80,22 +80,19 @@ namespace detail {
 /// each under the calling thread's flush-to-zero modes (denormals.hpp), on whichever thread
 /// runs it; false when there was nothing to do (see begin_step).
 template <class ExecutionPolicy, class System, class R>
-bool step_chunks(ExecutionPolicy&& policy, System& system, R duration) {
-  if (!system.begin_step(duration, "step")) return false;
+typename System::StepView step_chunks(ExecutionPolicy&& policy, System& system, R duration) {
+  typename System::StepView view = SystemAccess::begin_step(system, duration);
   constexpr std::size_t chunk = 16384;
-  const typename System::Arrays& arrays = system.arrays();
-  const typename System::StepParameters parameters =
-      SystemAccess::keep_step_parameters(system, duration);
-  const std::size_t size = system.size();
+  const std::size_t size = view.size();
   const std::size_t chunks = (size + chunk - 1) / chunk;
   const unsigned modes = FlushModeBits::modes();
   std::for_each(std::forward<ExecutionPolicy>(policy), CountingIterator(0),
                 CountingIterator(chunks), [&](std::size_t c) {
                   const SameFlushModes same_modes(modes);
                   const std::size_t begin = c * chunk;
-                  System::step_range(arrays, begin, std::min(begin + chunk, size), parameters);
+                  view.step_range(begin, std::min(begin + chunk, size));
                 });
-  return true;
+  return view;
 }
 
 }  // namespace detail
@@ -111,9 +108,8 @@ template <class ExecutionPolicy, class S, class D, class P, class... Features>
   requires(std::is_execution_policy_v<std::remove_cvref_t<ExecutionPolicy>>)
 void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system,
           typename ParticleSystem<S, D, P, Features...>::real duration) {
-  if (detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration)) {
-    detail::SystemAccess::finish_step(system, duration);
-  }
+  detail::SystemAccess::finish_step(
+      system, detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration));
 }
 
 /// As step(policy, system, duration), calling on_expire(i) for each particle whose lifetime is
@@ -121,14 +117,14 @@ void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system
 // clang-format off
 template <class ExecutionPolicy, class S, class D, class P, class... Features, class OnExpire>
   requires(std::is_execution_policy_v<std::remove_cvref_t<ExecutionPolicy>> &&
-           ParticleSystem<S, D, P, Features...>::has_lifetime &&
+           ParticleSystem<S, D, P, Features...>::template has<features::Lifetime> &&
            std::is_invocable_v<OnExpire&, std::size_t>)
 void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system,
           typename ParticleSystem<S, D, P, Features...>::real duration, OnExpire&& on_expire) {
   // clang-format on
-  if (detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration)) {
-    detail::SystemAccess::finish_step(system, duration, on_expire);
-  }
+  detail::SystemAccess::finish_step(
+      system, detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration),
+      on_expire);
 }
 
 }  // namespace pointmass

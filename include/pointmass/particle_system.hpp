@@ -13,34 +13,20 @@
 // (particle.hpp) on x, y and z (tests/system/ proves it for every policy pair). S is a Real or
 // a Precision<Real, Position> (precision.hpp). Each feature tag (features.hpp) adds what it
 // stores, and what is not chosen is neither stored nor computed. docs/particle-system.md is
-// the user's guide: every member family with an example, and the rules below in full.
+// the user's guide: every public name, with an example.
 //
 // Rules in brief. Removal is swap-remove, so an index names a particle until the next kill,
 // kill_if, clear or step with Lifetime; a handle (features::Handles) for as long as it lives.
-// Spans, arrays() and pointers into them are valid until the next spawn that grows the block,
-// reserve, move or swap. Indices are checked when POINTMASS_CHECKS is on; otherwise an index
-// >= size() is undefined behaviour, as for std::vector::operator[]. Bad values are reported
+// Spans and pointers into them are valid until the next spawn that grows the block, reserve,
+// move or swap. Indices are checked when POINTMASS_CHECKS is on; otherwise an index >= size()
+// is undefined behaviour, as for std::vector::operator[]. Bad values are reported
 // (config.hpp) and change nothing. `step` never allocates.
 //
-// Members by header. Here: the types and traits, construction and capacity, the uniform
-// values, spawning and killing, each particle's position, velocity, acceleration and
-// damping, arrays() and the step. The rest come from the facets, empty public bases (each
-// documents its members where it lives):
-//   system/columns.hpp            column<C>(), position_x() ... velocity_z(), and the user
-//                                 columns: column<Tag>(), column<Tag>(i), set_column<Tag>
-//   system/handles.hpp            Handle, handle, find, contains, handle_table_bytes
-//   system/force_accumulator.hpp  inverse_mass, force_accumulator, set_mass,
-//                                 set_inverse_mass, add_force
-//   system/lifetime.hpp           age, lifetime, set_lifetime
-//   system/interpolation.hpp      previous_position, interpolated_position,
-//                                 copy_interpolated_positions
-//   system/hand_off.hpp           copy_positions, positions_relative_to, position_relative_to
+// Every public name is declared in this class: the facets' members (system/*.hpp, private
+// bases) are re-exported by name, so nothing of the state or the kernel below is reachable.
 //
-// Owns: the public API, the line of facets, and detail::SystemAccess (what the steps of
-// parallel.hpp and kokkos.hpp reach of the state). Below it: features.hpp (the tags and the
-// table of arrays), detail/system_state.hpp (what the system holds, and how each call
-// works), detail/soa_block.hpp (the one allocation), detail/system_kernel.hpp (the step
-// loop).
+// Owns: the public API and the line of facets; StepView (system/step_view.hpp) and
+// detail::SystemAccess (detail/system_access.hpp) are included at its end.
 // Must not include: <execution> or anything that starts threads (parallel.hpp adds those).
 #pragma once
 
@@ -59,6 +45,7 @@
 #include "position.hpp"
 #include "real.hpp"
 #include "system/columns.hpp"
+#include "system/deprecated.hpp"
 #include "system/force_accumulator.hpp"
 #include "system/hand_off.hpp"
 #include "system/handles.hpp"
@@ -69,32 +56,37 @@
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 namespace detail {
-// The facets, each over the one before it and the first over the state: one line of bases,
-// in which every facet is empty (a system is as big as its state).
+// The facets, each over the one before it and the first over the state: one line of private
+// bases, in which every facet is empty (a system is as big as its state).
 template <class State>
-using SystemFacets = SystemHandOff<SystemInterpolation<
-    SystemLifetime<SystemForceAccumulator<SystemHandles<SystemColumns<State>>>>>>;
+using SystemFacets = SystemDeprecated<SystemHandOff<SystemInterpolation<
+    SystemLifetime<SystemForceAccumulator<SystemHandles<SystemColumns<State>>>>>>>;
 }  // namespace detail
 
 // clang-format off
 template <class S, DampingPolicy D = damping::PerSecond, class P = position::Euler,
           class... Features>
   requires((Real<S> || PrecisionChoice<S>) && (detail::is_feature_v<Features> && ...))
-class ParticleSystem
-    : public detail::SystemKernel<real_of_t<S>, D, P, detail::SystemLayout<S, D, Features...>>,
-      public detail::SystemFacets<detail::SystemStateBase<S, D, P, Features...>> {
+class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D, P, Features...>> {
   // clang-format on
   using State = detail::SystemState<S, D, P, Features...>;
   using Facets = detail::SystemFacets<detail::SystemStateBase<S, D, P, Features...>>;
   using R = real_of_t<S>;
   using Layout = typename State::Layout;
   using Kernel = typename State::Kernel;
+  using damping_state = typename D::template State<R>;
   using State::acceleration_;
   using State::damping_;
   using State::load;
   using State::removing_;
   using State::store;
   using State::valid_index;
+  static constexpr bool per_particle_damping_ = Layout::per_particle_damping;
+  static constexpr bool per_particle_acceleration_ = Layout::per_particle_acceleration;
+  static constexpr bool has_lifetime_ = Layout::has_lifetime;
+  static_assert(!per_particle_damping_ || !std::is_empty_v<damping_state>,
+                "features::PerParticleDamping needs a damping policy with a damping value "
+                "(damping::None has none)");
   // P is checked here, with one sentence, rather than as a constraint (see position.hpp).
   static_assert(detail::check_policy_pair<D, P>());
 
@@ -102,41 +94,30 @@ class ParticleSystem
   using real = R;
   using damping_policy = D;
   using position_policy = P;
-  using damping_state = typename D::template State<R>;
-  using damping_factors = damping_factors_t<D, R>;
   /// The scalar particle whose step this system reproduces.
   using particle_type = Particle<S, D, P>;
-  /// How positions are stored (precision.hpp): R, a wider Real, or Compensated<R>.
-  using position_precision = position_precision_of_t<S>;
   /// What position(i) returns and spawn and set_position take, per component (R, or double
   /// for Precision<float, double> and Precision<float, Compensated<float>>).
   using position_value = typename State::position_value;
-  /// The element of the position columns (position_x(), ..., and the previous positions).
+  /// The element of the position columns (column<Column::position_x>(), ..., and the
+  /// previous positions).
   using position_element = typename Layout::position_element;
-  /// Raw pointers to the arrays (nullptr for those not stored) and the number of live
-  /// particles: what step_particle works on.
-  using Arrays = typename Layout::Arrays;
-  using typename Kernel::StepParameters;
-  /// A particle's stable name (features::Handles; system/handles.hpp).
+  /// A particle's stable name (features::Handles): see handle() and find().
   using typename Facets::Handle;
-  // The columns' traits (element_t, stores, user_columns, user_column_count, user_element_t,
-  // has_column) are system/columns.hpp's.
+  class StepView;
 
-  static constexpr bool per_particle_damping = Layout::per_particle_damping;
-  static constexpr bool per_particle_acceleration = Layout::per_particle_acceleration;
-  static constexpr bool has_forces = Layout::has_forces;
-  static constexpr bool has_lifetime = Layout::has_lifetime;
-  static constexpr bool has_interpolation = Layout::has_interpolation;
-  static constexpr bool has_handles = Layout::has_handles;
-  /// True when the damping policy has a damping value at all (not damping::None).
+  /// True when the configuration has `Feature` (a tag of features.hpp; features::Handles for
+  /// any BasicHandles<G>) or a user column tagged `Feature` (features::Column<Feature, T>).
+  template <class Feature>
+  static constexpr bool has = detail::has_feature_v<Feature, Features...>;
+  /// True when the damping policy has a damping value at all (not damping::None), as for
+  /// Particle: set_damping exists.
   static constexpr bool stores_damping = !std::is_empty_v<damping_state>;
-  static_assert(!per_particle_damping || stores_damping,
-                "features::PerParticleDamping needs a damping policy with a damping value "
-                "(damping::None has none)");
+  /// True when the block holds column C (features.hpp's Column), for column<C>().
+  template <Column C>
+  static constexpr bool stores = Layout::template stores<C>;
   /// Bytes each particle occupies (the block adds under 4.5 KiB per array of padding).
   static constexpr std::size_t storage_bytes_per_particle = Layout::bytes_per_particle;
-  /// How many arrays the block holds.
-  static constexpr std::size_t array_count = Layout::array_count;
   /// Returned by spawn when its input was rejected.
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
 
@@ -145,7 +126,7 @@ class ParticleSystem
   ParticleSystem() = default;
   /// An empty system with room for `capacity` particles.
   explicit ParticleSystem(std::size_t capacity) { reserve(capacity); }
-  /// A copy has the same particles, capacity and uniform values; it starts walking forwards.
+  /// A copy has the same particles, capacity and uniform values.
   ParticleSystem(const ParticleSystem&) = default;
   ParticleSystem(ParticleSystem&&) noexcept = default;
   ParticleSystem& operator=(ParticleSystem other) noexcept {
@@ -172,18 +153,18 @@ class ParticleSystem
   // --- uniform values ------------------------------------------------------------------------
 
   /// The acceleration of every particle (gravity); finite.
-  void set_acceleration(const Vector3<R>& acceleration) requires(!per_particle_acceleration) {
+  void set_acceleration(const Vector3<R>& acceleration) requires(!per_particle_acceleration_) {
     if (detail::check_finite("set_acceleration", "acceleration", acceleration)) {
       acceleration_ = acceleration;
     }
   }
-  [[nodiscard]] Vector3<R> acceleration() const noexcept requires(!per_particle_acceleration) {
+  [[nodiscard]] Vector3<R> acceleration() const noexcept requires(!per_particle_acceleration_) {
     return acceleration_;
   }
   /// The damping of every particle, in [0, 1] (per second or per frame, as the policy says).
   // clang-format off
   void set_damping(R damping)
-    requires(stores_damping && !per_particle_damping)
+    requires(stores_damping && !per_particle_damping_)
   {
     // clang-format on
     if (detail::check_damping("set_damping", damping)) {
@@ -191,7 +172,7 @@ class ParticleSystem
       State::forget_factors();
     }
   }
-  [[nodiscard]] R damping() const noexcept requires(!per_particle_damping) {
+  [[nodiscard]] R damping() const noexcept requires(!per_particle_damping_) {
     return damping_.value();
   }
 
@@ -200,7 +181,7 @@ class ParticleSystem
   /// Adds a particle at `position` with `velocity` and returns its index. Per-particle
   /// values start as a default Particle's (acceleration 0, damping 1, mass 1, no force, age 0,
   /// lifetime infinite), user columns as T{}. Non-finite input is reported and nothing is
-  /// added (returns npos). Grows the block when full (invalidating spans and arrays()).
+  /// added (returns npos). Grows the block when full (invalidating spans).
   std::size_t spawn(const Vector3<position_value>& position, const Vector3<R>& velocity) {
     if (!State::valid_position("spawn", position) ||
         !detail::check_finite("spawn", "velocity", velocity)) {
@@ -232,63 +213,28 @@ class ParticleSystem
   /// spawn(arguments...), returning the new particle's handle (a default Handle, which
   /// finds nothing, when the input was rejected).
   template <class... Arguments>
-    requires(has_handles)
+    requires(Layout::has_handles)
   Handle spawn_handle(const Arguments&... arguments) {
     const std::size_t i = spawn(arguments...);
     return i == npos ? Handle{} : this->handle(i);
   }
   /// Spawns `count` particles, reserving once: particle k is spawn(generator(k)...), where
-  /// generator(k) returns the arguments of a spawn as a tuple-like value (a std::pair of
-  /// position and velocity, a std::tuple with the user columns' values after them) or a
-  /// particle_type. Returns how many were added (a rejected one is reported, with
-  /// ContractViolation::within = "spawn_burst" and element = k, and skipped);
-  /// they are the last ones, [size() - returned, size()), until the next removal. If the
-  /// report of a rejected one throws (the default handler) or the generator throws, the
-  /// particles this call added are removed again before the exception leaves: the system
-  /// holds what it held before the call (its capacity may have grown). Inside the generator
-  /// removing (kill, kill_if, clear) or stepping is refused; a generator that replaces the
-  /// particles whole (assigns, swaps or moves the system) ends the burst: it returns 0, and
-  /// a throw after that leaves the particles as they are.
+  /// generator(k) returns a spawn's arguments as a tuple-like value (position and velocity,
+  /// then the user columns' values) or a particle_type. Returns how many were added, the last
+  /// ones until the next removal (a rejected one is reported, with within = "spawn_burst" and
+  /// element = k, and skipped). If the generator or a report throws, this call's particles
+  /// are removed before the exception leaves (the capacity may have grown). Inside the
+  /// generator removing or stepping is refused; one that replaces the particles whole
+  /// (assigns, swaps or moves the system) ends the burst, which returns 0.
   template <class Generator>
   std::size_t spawn_burst(std::size_t count, Generator&& generator) {
-    State::make_room(count);
-    const std::size_t before = size();
-    const std::uint16_t replacements = State::replacements_;
-    const auto spawn_all = [&]() -> std::size_t {
-      // Removals and steps are refused while the burst runs (its particles are the last ones).
-      const typename State::PassScope burst(removing_, detail::RemovalPass::burst);
-      std::size_t spawned = 0;
-      for (std::size_t k = 0; k < count; ++k) {
-        decltype(auto) made = generator(k);
-        // The generator replaced the particles whole (assigned, swapped or moved the system):
-        // those this call added left with them, and the burst ends.
-        if (State::replacements_ != replacements) return 0;
-        const detail::ReportingElement reporting("spawn_burst", k);
-        std::size_t i;
-        if constexpr (std::is_convertible_v<decltype(made), const particle_type&>) {
-          i = spawn(static_cast<const particle_type&>(made));
-        } else {
-          i = std::apply([&](const auto&... arguments) { return spawn(arguments...); }, made);
-        }
-        if (i != npos) ++spawned;
+    return State::spawn_each(count, generator, [this](const auto& made) {
+      if constexpr (std::is_convertible_v<decltype(made), const particle_type&>) {
+        return spawn(static_cast<const particle_type&>(made));
+      } else {
+        return std::apply([this](const auto&... arguments) { return spawn(arguments...); }, made);
       }
-      return spawned;
-    };
-#if POINTMASS_HAS_EXCEPTIONS
-    try {
-      return spawn_all();
-    } catch (...) {
-      // The last particles are this call's: removing the last moves no other particle.
-      // (Particles replaced whole by the generator are not this call's: left as they are.)
-      if (State::replacements_ == replacements) {
-        while (size() > before) State::remove(size() - 1);
-      }
-      throw;
-    }
-#else
-    static_cast<void>(before);
-    return spawn_all();
-#endif
+    });
   }
 
   /// Removes particle `index` by moving the last particle into its place (order not kept).
@@ -316,13 +262,15 @@ class ParticleSystem
   }
   [[nodiscard]] Vector3<R> velocity(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
     if (!valid_index("velocity", i)) return {};
-    return load(arrays().velocity_x, arrays().velocity_y, arrays().velocity_z, i);
+    const auto& a = State::arrays();
+    return load(a.velocity_x, a.velocity_y, a.velocity_z, i);
   }
   /// The acceleration particle i has (its own, or the system's).
   [[nodiscard]] Vector3<R> acceleration(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
     if (!valid_index("acceleration", i)) return {};
-    if constexpr (per_particle_acceleration) {
-      return load(arrays().acceleration_x, arrays().acceleration_y, arrays().acceleration_z, i);
+    if constexpr (per_particle_acceleration_) {
+      const auto& a = State::arrays();
+      return load(a.acceleration_x, a.acceleration_y, a.acceleration_z, i);
     } else {
       return acceleration_;
     }
@@ -330,8 +278,8 @@ class ParticleSystem
   /// The damping particle i has (its own, or the system's).
   [[nodiscard]] R damping(std::size_t i) const noexcept(!POINTMASS_HOST_CHECKS) {
     if (!valid_index("damping", i)) return R(1);
-    if constexpr (per_particle_damping) {
-      return Layout::load_damping(arrays(), i).value();
+    if constexpr (per_particle_damping_) {
+      return Layout::load_damping(State::arrays(), i).value();
     } else {
       return damping_.value();
     }
@@ -347,33 +295,47 @@ class ParticleSystem
   void set_velocity(std::size_t i, const Vector3<R>& velocity) {
     if (detail::check_index("set_velocity", i, size()) &&
         detail::check_finite("set_velocity", "velocity", velocity)) {
-      store(arrays().velocity_x, arrays().velocity_y, arrays().velocity_z, i, velocity);
+      const auto& a = State::arrays();
+      store(a.velocity_x, a.velocity_y, a.velocity_z, i, velocity);
     }
   }
   void set_acceleration(std::size_t i,
-                        const Vector3<R>& acceleration) requires per_particle_acceleration {
+                        const Vector3<R>& acceleration) requires per_particle_acceleration_ {
     if (detail::check_index("set_acceleration", i, size()) &&
         detail::check_finite("set_acceleration", "acceleration", acceleration)) {
-      store(arrays().acceleration_x, arrays().acceleration_y, arrays().acceleration_z, i,
-            acceleration);
+      const auto& a = State::arrays();
+      store(a.acceleration_x, a.acceleration_y, a.acceleration_z, i, acceleration);
     }
   }
-  void set_damping(std::size_t i, R damping) requires per_particle_damping {
+  void set_damping(std::size_t i, R damping) requires per_particle_damping_ {
     if (detail::check_index("set_damping", i, size()) &&
         detail::check_damping("set_damping", damping)) {
       State::store_damping(i, damping_state(damping));
     }
   }
 
-  /// The raw arrays (see step_particle), with size() live particles. Valid until the block
-  /// grows or moves (a growing spawn, reserve, move, swap).
-  using State::arrays;
+  // --- what the facets add (system/*.hpp documents each) -------------------------------------
+  // column, set_column: the arrays as spans and the user's columns (columns.hpp); handle,
+  // find, contains: features::Handles (handles.hpp); inverse_mass, set_mass,
+  // set_inverse_mass, add_force, force_accumulator: features::ForceAccumulator
+  // (force_accumulator.hpp); age, lifetime, set_lifetime: features::Lifetime (lifetime.hpp);
+  // previous_position, interpolated_position, copy_interpolated_positions:
+  // features::Interpolation (interpolation.hpp); copy_positions, position_relative_to: to a
+  // renderer (hand_off.hpp).
+
+  using Facets::add_force, Facets::age, Facets::column, Facets::contains,
+      Facets::copy_interpolated_positions, Facets::copy_positions, Facets::find,
+      Facets::force_accumulator, Facets::handle, Facets::interpolated_position,
+      Facets::inverse_mass, Facets::lifetime, Facets::position_relative_to,
+      Facets::previous_position, Facets::set_column, Facets::set_inverse_mass, Facets::set_lifetime,
+      Facets::set_mass;
 
   // --- the step ------------------------------------------------------------------------------
 
-  /// Advances every particle by `duration` seconds (see step_particle), then expires those
-  /// whose lifetime is over. A negative, NaN or infinite duration is a contract violation,
-  /// checked when POINTMASS_CHECKS is on; zero changes nothing. Allocates nothing.
+  /// Advances every particle by `duration` seconds (each particle's step is Particle's:
+  /// detail/system_kernel.hpp), then expires those whose lifetime is over. A negative, NaN or
+  /// infinite duration is a contract violation, checked when POINTMASS_CHECKS is on; zero
+  /// changes nothing. Allocates nothing.
   void step(R duration) {
     if constexpr (PositionPolicyFor<P, D>) {  // else the static_assert above has said why
       if (State::walk(duration)) {
@@ -385,11 +347,10 @@ class ParticleSystem
   /// As step(duration), calling on_expire(i) for each particle whose lifetime is over, once,
   /// after the step and before its removal, so that particle i still holds its final state.
   /// Spawning inside the callback is allowed and immediate (the new particles are stepped
-  /// from the next step on); removing particles (kill, kill_if, clear) or stepping (step,
-  /// finish_step) is refused.
+  /// from the next step on); removing particles (kill, kill_if, clear) or stepping is refused.
   // clang-format off
   template <class OnExpire>
-    requires(has_lifetime && std::is_invocable_v<OnExpire&, std::size_t>)
+    requires(has_lifetime_ && std::is_invocable_v<OnExpire&, std::size_t>)
   void step(R duration, OnExpire&& on_expire) {
     // clang-format on
     if constexpr (PositionPolicyFor<P, D>) {
@@ -397,80 +358,76 @@ class ParticleSystem
     }
   }
 
-  /// True when the next `step` walks the particles backwards (see alternates). A copy
-  /// starts forwards; a move or swap takes the direction along.
-  [[nodiscard]] bool next_step_backward() const noexcept { return State::backward_; }
-
-  // Loops of one's own (a device, a thread pool: parallel.hpp, kokkos.hpp) step the arrays
-  // with step_particle(arrays(), i, step_parameters(t)) for i < size(), after begin_step(t)
-  // said there is work, then call finish_step() on the host to expire particles.
-
-  /// Says that the arrays were written from outside (through arrays(): a device's results
-  /// copied back): the next step recomputes what the system keeps between steps (each
-  /// particle's d^t for the last step length, with per-particle PerSecond or
-  /// AccelerateThenDamp damping). finish_step() says it too.
-  void arrays_changed() noexcept { State::forget_retention(); }
-
-  /// What every particle's step of `duration` shares: the uniform damping factors (the one
-  /// power function of a step with uniform per-second damping), those the last step kept if it
-  /// had this length, else computed (the same bits either way). It changes nothing: only the
-  /// library's steps (`step`, the parallel step, KokkosSystem::step) keep factors for the next
-  /// step. It does not check the duration: call it once begin_step(duration) has accepted it
-  /// (and said there is work), as step does. Likewise step_particle does not check its index: the loop's bounds are
-  /// [0, size()), or step_range's, which checks them.
-  using State::step_parameters;
-  /// True if a step of `duration` has work to do; reports a bad duration (when checked).
-  using State::begin_step;
-  /// After the particles have stepped: removes those whose age reached their (finite)
-  /// lifetime. Called by step.
-  void finish_step() {
-    arrays_changed();
+  /// A step of one's own (threads, a device): begin_step(duration) returns the view of this
+  /// step, whose step_particle(i) for every i < view.size() (in any order, on any threads)
+  /// is step(duration)'s arithmetic; finish_step(std::move(view)) then expires particles as
+  /// step does. A bad duration is reported (when checked) and gives an empty view.
+  [[nodiscard]] StepView begin_step(R duration) { return begin_view(duration, "begin_step"); }
+  /// Ends the step `view` began: removes the particles whose age reached their (finite)
+  /// lifetime. A view of another system, or one whose particles changed after begin_step (a
+  /// spawn, kill or step in between), is a contract violation, reported; nothing is done.
+  void finish_step(StepView&& view) {
     typename State::NoCallback none;
-    State::expire(none, "finish_step");
+    finish(view, none);
   }
-  /// finish_step calling on_expire(i) for each expiring particle before its removal.
+  /// finish_step(view) calling on_expire(i) for each expiring particle before its removal.
   // clang-format off
   template <class OnExpire>
-    requires(has_lifetime && std::is_invocable_v<OnExpire&, std::size_t>)
-  void finish_step(OnExpire&& on_expire) {
+    requires(has_lifetime_ && std::is_invocable_v<OnExpire&, std::size_t>)
+  void finish_step(StepView&& view, OnExpire&& on_expire) {
     // clang-format on
-    arrays_changed();
-    State::expire(on_expire, "finish_step");
+    finish(view, on_expire);
   }
-  /// True when a particle of this `age` and `lifetime` has expired: its age reached a finite
-  /// lifetime (an infinite one never expires, even when the age itself overflows).
-  using State::expired;
+
+  // --- deprecated: the names of 0.1 (system/deprecated.hpp; gone in 0.3) --------------------
+
+  using Facets::array_count, Facets::arrays, Facets::arrays_changed, Facets::expired,
+      Facets::finish_step, Facets::has_forces, Facets::has_handles, Facets::has_interpolation,
+      Facets::has_lifetime, Facets::per_particle_acceleration, Facets::per_particle_damping,
+      Facets::position_x, Facets::position_y, Facets::position_z, Facets::positions_relative_to,
+      Facets::step_parameters, Facets::step_particle, Facets::step_range, Facets::velocity_x,
+      Facets::velocity_y, Facets::velocity_z;
+  using typename Facets::Arrays;
+  using typename Facets::StepParameters;
 
  private:
-  friend struct detail::SystemAccess;  // parallel.hpp, kokkos.hpp: steps that keep as step does
-};
+  friend struct detail::SystemAccess;  // parallel.hpp, kokkos.hpp and the tests
 
-namespace detail {
-/// What ParticleSystem::step does around its walk, for the steps of parallel.hpp and
-/// kokkos.hpp: before it, the uniform damping factors kept for the step length
-/// (keep_step_parameters; step_parameters() keeps none); after it, the damping_retention
-/// column's d^t kept as this duration's (finish_step(), which cannot know what a loop of the
-/// caller's did, forgets it). So the next step of the same length computes no exponential,
-/// as after step.
-struct SystemAccess {
-  template <class System, class R>
-  static typename System::StepParameters keep_step_parameters(System& system, R duration) {
-    return system.keep_step_parameters(duration);  // the state's, reached through the system
+  // `keep`: keep the uniform damping factors for the next step of this length, as step does
+  // (the library's steps); a view from begin_step keeps nothing.
+  StepView begin_view(R duration, const char* function, bool keep = false) {
+    if constexpr (PositionPolicyFor<P, D>) {
+      if (State::begin_step(duration, function)) {
+        return StepView(
+            this, State::arrays(),
+            keep ? State::keep_step_parameters(duration) : State::step_parameters(duration));
+      }
+    }
+    return StepView(this, typename Layout::Arrays{}, {});
   }
-  template <class System, class R, class OnExpire>
-  static void finish_step(System& system, R duration, OnExpire& on_expire) {
-    system.record_retention(duration);  // the state's, reached through the system
-    system.expire(on_expire);
-  }
-  template <class System, class R>
-  static void finish_step(System& system, R duration) {
-    typename System::NoCallback none;  // the state's, named through the system
-    finish_step(system, duration, none);
+  template <class OnExpire>
+  void finish(StepView& view, OnExpire& on_expire) {
+    const StepView finished(std::move(view));
+    const bool mine = finished.owner_ == this;
+    const bool same = mine && (finished.size() == 0 ||
+                               (finished.arrays_.size == size() &&
+                                finished.arrays_.position_x == State::arrays().position_x));
+    if (!detail::check_step_view("finish_step", mine, same, finished.size()) ||
+        finished.size() == 0) {
+      return;
+    }
+    // A loop of the caller's may not have refreshed every particle's d^t: the next step
+    // computes it again.
+    State::forget_retention();
+    State::expire(on_expire, "finish_step");
   }
 };
-}  // namespace detail
 
 }  // namespace pointmass
+
+// StepView, and what the library's own steps reach of the state.
+#include "detail/system_access.hpp"
+#include "system/step_view.hpp"
 
 // Deprecated: defining POINTMASS_ENABLE_PARALLEL before this header still brings in the
 // parallel step; include <pointmass/parallel.hpp> instead (the macro goes in the next release).

@@ -48,12 +48,12 @@ TEST_CASE_TEMPLATE("generators on a ParticleSystem match Particle, through apply
     forces::apply(drag, direct, dt);
     forces::apply(buoyancy, direct, dt);
     forces::apply(gravity, direct, dt);
-    forces::SoaBodies<R> soa{wrapped.position_x(),
-                             wrapped.position_y(),
-                             wrapped.position_z(),
-                             wrapped.velocity_x(),
-                             wrapped.velocity_y(),
-                             wrapped.velocity_z(),
+    forces::SoaBodies<R> soa{wrapped.template column<pointmass::Column::position_x>(),
+                             wrapped.template column<pointmass::Column::position_y>(),
+                             wrapped.template column<pointmass::Column::position_z>(),
+                             wrapped.template column<pointmass::Column::velocity_x>(),
+                             wrapped.template column<pointmass::Column::velocity_y>(),
+                             wrapped.template column<pointmass::Column::velocity_z>(),
                              wrapped.template column<pointmass::Column::inverse_mass>(),
                              wrapped.template column<pointmass::Column::force_x>(),
                              wrapped.template column<pointmass::Column::force_y>(),
@@ -61,15 +61,18 @@ TEST_CASE_TEMPLATE("generators on a ParticleSystem match Particle, through apply
     forces::apply(drag, soa, dt);
     forces::apply(buoyancy, soa, dt);
     // A temporary adapter: its forces land in the arrays it refers to.
-    forces::apply(
-        gravity,
-        forces::SoaBodies<R>{wrapped.position_x(), wrapped.position_y(), wrapped.position_z(),
-                             wrapped.velocity_x(), wrapped.velocity_y(), wrapped.velocity_z(),
-                             wrapped.template column<pointmass::Column::inverse_mass>(),
-                             wrapped.template column<pointmass::Column::force_x>(),
-                             wrapped.template column<pointmass::Column::force_y>(),
-                             wrapped.template column<pointmass::Column::force_z>()},
-        dt);
+    forces::apply(gravity,
+                  forces::SoaBodies<R>{wrapped.template column<pointmass::Column::position_x>(),
+                                       wrapped.template column<pointmass::Column::position_y>(),
+                                       wrapped.template column<pointmass::Column::position_z>(),
+                                       wrapped.template column<pointmass::Column::velocity_x>(),
+                                       wrapped.template column<pointmass::Column::velocity_y>(),
+                                       wrapped.template column<pointmass::Column::velocity_z>(),
+                                       wrapped.template column<pointmass::Column::inverse_mass>(),
+                                       wrapped.template column<pointmass::Column::force_x>(),
+                                       wrapped.template column<pointmass::Column::force_y>(),
+                                       wrapped.template column<pointmass::Column::force_z>()},
+                  dt);
     for (Body& body : bodies) {
       forces::update_force(drag, body, dt);
       forces::update_force(buoyancy, body, dt);

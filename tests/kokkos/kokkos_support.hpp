@@ -39,14 +39,15 @@ template <class System>
 bool same_arrays(const System& a, const System& b) {
   if (a.size() != b.size()) return false;
   using Layout = detail::layout_of_t<System>;
-  typename System::Arrays first = a.arrays();
+  typename System::Arrays first = pointmass::detail::SystemAccess::arrays(a);
   bool same = true;
   std::size_t arrays = 0;
-  Layout::for_each_array_pair(first, b.arrays(), [&](auto* x, auto* y) {
-    ++arrays;
-    same = same && std::memcmp(x, y, a.size() * sizeof(*x)) == 0;
-  });
-  return same && arrays == System::array_count;
+  Layout::for_each_array_pair(first, pointmass::detail::SystemAccess::arrays(b),
+                              [&](auto* x, auto* y) {
+                                ++arrays;
+                                same = same && std::memcmp(x, y, a.size() * sizeof(*x)) == 0;
+                              });
+  return same && arrays == pointmass::detail::SystemAccess::Layout<System>::array_count;
 }
 
 /// Steps of varied length (seconds), including a long one that takes Exact past |kt| = 1/4.
@@ -62,10 +63,11 @@ System make_scene(std::size_t count, std::uint32_t seed) {
   std::mt19937 engine(seed);
   std::uniform_real_distribution<R> unit(R(0), R(1));
   System system(count);
-  if constexpr (!System::per_particle_acceleration) {
+  if constexpr (!System::template has<pointmass::features::PerParticleAcceleration>) {
     system.set_acceleration({R(1.5), R(-9.807), R(0.25)});
   }
-  if constexpr (System::stores_damping && !System::per_particle_damping) {
+  if constexpr (System::stores_damping &&
+                !System::template has<pointmass::features::PerParticleDamping>) {
     system.set_damping(R(0.6));
   }
   for (std::size_t i = 0; i < count; ++i) {
@@ -73,13 +75,13 @@ System make_scene(std::size_t count, std::uint32_t seed) {
     using Value = typename System::position_value;  // R, or wider (precision.hpp)
     REQUIRE(system.spawn({Value(position.x), Value(position.y), Value(position.z)},
                          random_vector(engine, R(30))) == i);
-    if constexpr (System::per_particle_acceleration) {
+    if constexpr (System::template has<pointmass::features::PerParticleAcceleration>) {
       system.set_acceleration(i, random_vector(engine, R(20)));
     }
-    if constexpr (System::per_particle_damping) {
+    if constexpr (System::template has<pointmass::features::PerParticleDamping>) {
       system.set_damping(i, i % 9 == 0 ? R(1) : i % 13 == 0 ? R(0) : unit(engine));
     }
-    if constexpr (System::has_forces) {
+    if constexpr (System::template has<pointmass::features::ForceAccumulator>) {
       if (i % 6 == 0) {
         system.set_inverse_mass(i, R(0));  // immovable
       } else {
@@ -87,7 +89,7 @@ System make_scene(std::size_t count, std::uint32_t seed) {
       }
       system.add_force(i, random_vector(engine, R(5)));
     }
-    if constexpr (System::has_lifetime) {
+    if constexpr (System::template has<pointmass::features::Lifetime>) {
       // The 1,000 steps below last 171 s: most particles expire on the way, at random steps.
       system.set_lifetime(i, i % 7 == 0 ? real_infinity<R> : R(1) + R(199) * unit(engine));
     }
@@ -123,7 +125,7 @@ void check_equivalence(std::size_t count, int steps, std::uint32_t seed) {
   each.copy_to(back);
   REQUIRE(back.size() == host.size());
   CHECK(same_arrays(back, host));
-  if constexpr (System::has_lifetime) {
+  if constexpr (System::template has<pointmass::features::Lifetime>) {
     CHECK(host.size() < count);  // particles expired ...
     CHECK(host.size() > 0);      // ... not all of them
   } else {

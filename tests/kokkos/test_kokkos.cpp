@@ -95,7 +95,8 @@ TEST_CASE("expiry leaves the survivors in swap-remove's order") {
   Sparks back;
   device.copy_to(back);
   const std::vector<float> expected = {0, 7, 5, 3, 4};
-  const std::vector<float> order(back.position_x().begin(), back.position_x().end());
+  const std::vector<float> order(back.template column<pointmass::Column::position_x>().begin(),
+                                 back.template column<pointmass::Column::position_x>().end());
   CHECK(order == expected);
 }
 
@@ -107,7 +108,7 @@ TEST_CASE("expire alone removes what finish_step removes and says how many") {
   const auto arrays = device.arrays();
   const auto parameters = device.step_parameters(0.75);
   Kokkos::parallel_for(Kokkos::RangePolicy<Space>(0, 300), [=](std::int64_t i) {
-    Featured::step_particle(arrays, static_cast<std::size_t>(i), parameters);
+    Featured::StepView::step_particle(arrays, static_cast<std::size_t>(i), parameters);
   });
   CHECK(device.expire(Space()) == 75);
   // ... as the host does with the same step.

@@ -61,7 +61,8 @@ static_assert(
 static_assert(pm::ParticleSystem<float>::storage_bytes_per_particle == 24);
 static_assert(pm::ParticleSystem<DoublePositions>::storage_bytes_per_particle == 36);
 static_assert(pm::ParticleSystem<CompensatedPositions>::storage_bytes_per_particle == 36);
-static_assert(pm::ParticleSystem<CompensatedPositions>::array_count == 9);
+static_assert(pm::pointmass::detail::SystemAccess::Layout<
+                  ParticleSystem<CompensatedPositions>>::array_count == 9);
 static_assert(pm::ParticleSystem<CompensatedPositions>::stores<pm::Column::position_error_x>);
 static_assert(!pm::ParticleSystem<DoublePositions>::stores<pm::Column::position_error_x>);
 static_assert(
@@ -115,7 +116,7 @@ void configure(P& particle, const Launch& launch) {
 
 template <class System, class Particle>
 bool system_matches(const System& system, std::size_t i, const Particle& particle) {
-  const auto& a = system.arrays();
+  const auto& a = pointmass::detail::SystemAccess::arrays(system);
   const Vector3<typename System::position_element> stored{a.position_x[i], a.position_y[i],
                                                           a.position_z[i]};
   bool same = same_bits(stored, particle.stored_position()) &&
@@ -435,7 +436,7 @@ TEST_CASE(
   int with_error_term = 0;
   for (int round = 0; round < 20; ++round) {
     const Vector3<float> t{offset(random), offset(random), offset(random)};
-    const auto& a = system.arrays();
+    const auto& a = pointmass::detail::SystemAccess::arrays(system);
     // One camera for the whole system, placed for particle j; every other particle's offset is
     // checked against the exact offset rounded once to float.
     const std::size_t j = static_cast<std::size_t>(round) % system.size();
@@ -834,27 +835,31 @@ TEST_CASE_TEMPLATE(
   const std::size_t b = system.spawn({-far, 0.0, 3.0}, {0.0f, 1.0f, 0.0f}, 8);
   const auto handle_b = system.handle(b);
   // Spawned: the previous position is the stored position column, whole.
-  CHECK(system.previous_position(a).x == system.position_x()[a]);
-  CHECK(system.previous_position(a).z == system.position_z()[a]);
+  CHECK(system.previous_position(a).x ==
+        system.template column<pointmass::Column::position_x>()[a]);
+  CHECK(system.previous_position(a).z ==
+        system.template column<pointmass::Column::position_z>()[a]);
 
-  std::vector<E> before_x(system.position_x().begin(), system.position_x().end());
+  std::vector<E> before_x(system.template column<pointmass::Column::position_x>().begin(),
+                          system.template column<pointmass::Column::position_x>().end());
   system.step(1.0f / 60.0f);
   for (std::size_t i = 0; i < system.size(); ++i) {
     CHECK(system.previous_position(i).x == before_x[i]);  // kept by the step, bit for bit
     CHECK(system.interpolated_position(i, 0.0f).x == before_x[i]);
-    CHECK(system.interpolated_position(i, 1.0f).x == system.position_x()[i]);
+    CHECK(system.interpolated_position(i, 1.0f).x ==
+          system.template column<pointmass::Column::position_x>()[i]);
   }
   // Halfway lies between, in the column's own precision.
   const E middle = system.interpolated_position(a, 0.5f).x;
   CHECK(middle > before_x[a]);
-  CHECK(middle < system.position_x()[a]);
+  CHECK(middle < system.template column<pointmass::Column::position_x>()[a]);
   if constexpr (std::is_same_v<E, double>) {
     // The midpoint rounded once, bit for bit: before and after lie within a factor 2 of each
     // other (1e6 m, 0.17 m apart), so after - before is exact (Sterbenz), and so is its half;
     // before + half then rounds once, to the double nearest (before + after) / 2. Long
     // double holds that sum exactly (54 bits: 2^20 down to the ulp at 1e6 m, 2^-33 m), so its
     // half rounded to double is the same double. A tolerance would be 0 ulp: nothing to allow.
-    const double after = system.position_x()[a];
+    const double after = system.template column<pointmass::Column::position_x>()[a];
     CHECK(same_bits(middle, before_x[a] + (after - before_x[a]) * 0.5));
     if constexpr (std::numeric_limits<Wide>::digits > std::numeric_limits<double>::digits) {
       CHECK(same_bits(middle, static_cast<double>((Wide(before_x[a]) + Wide(after)) / 2)));
@@ -874,7 +879,8 @@ TEST_CASE_TEMPLATE(
   // set_position is a jump: the previous position follows it.
   system.set_position(*moved, {far, far, far});
   CHECK(system.position(*moved).x == far);
-  CHECK(system.previous_position(*moved).y == system.position_y()[*moved]);
+  CHECK(system.previous_position(*moved).y ==
+        system.template column<pointmass::Column::position_y>()[*moved]);
 }
 
 // --- setting positions -------------------------------------------------------------------------

@@ -277,12 +277,10 @@ TEST_CASE_TEMPLATE("the step kernel over one index is the step", R, float, doubl
   for (int step = 0; step < 10; ++step) {
     stepped.step(R(0.1));
     // What another engine's loop would do: the kernel for each i, then expiry on the host.
-    REQUIRE(by_index.begin_step(R(0.1)));
-    const auto parameters = by_index.step_parameters(R(0.1));
-    for (std::size_t i = 0; i < by_index.size(); ++i) {
-      System::step_particle(by_index.arrays(), i, parameters);
-    }
-    by_index.finish_step();
+    auto view = by_index.begin_step(R(0.1));
+    REQUIRE(view.size() == by_index.size());
+    for (std::size_t i = 0; i < view.size(); ++i) view.step_particle(i);
+    by_index.finish_step(std::move(view));
     REQUIRE(stepped.size() == by_index.size());
     for (std::size_t i = 0; i < stepped.size(); ++i) {
       REQUIRE(same_bits(stepped.position(i), by_index.position(i)));
@@ -313,7 +311,8 @@ TEST_CASE_TEMPLATE(
     particle.set_position(random_vector(engine, R(50)));
     particle.set_velocity(random_vector(engine, R(20)));
     particle.set_damping(damping(engine));
-    if constexpr (S::per_particle_acceleration) particle.set_acceleration({R(0), R(-9.81), R(0)});
+    if constexpr (S::template has<pointmass::features::PerParticleAcceleration>)
+      particle.set_acceleration({R(0), R(-9.81), R(0)});
     REQUIRE(system.spawn(particle) == particles.size());
     particles.push_back(particle);
   };
@@ -325,7 +324,7 @@ TEST_CASE_TEMPLATE(
   // The kept column holds each particle's d^t for the last length, as the policy gives it.
   const auto holds_factors_for = [&](R t) {
     for (std::size_t i = 0; i < system.size(); ++i) {
-      const typename S::damping_state state(system.damping(i));
+      const typename S::damping_policy::template State<R> state(system.damping(i));
       if (!same_bits(system.template column<Column::damping_retention>()[i],
                      S::damping_policy::factors(state, t).kept)) {
         return false;
@@ -362,13 +361,13 @@ TEST_CASE_TEMPLATE(
   for (auto& particle : particles) particle.integrate(fixed);
   REQUIRE(matches(copy, particles));
   REQUIRE(matches(system, particles));
-  // A loop of one's own with another length (the device route), then finish_step(): the next
+  // A loop of one's own with another length (the device route), then finish_step: the next
   // step of the old length must not trust the column.
   const R other = R(1) / R(45);
-  REQUIRE(system.begin_step(other));
-  const typename S::StepParameters parameters = system.step_parameters(other);
-  for (std::size_t i = 0; i < system.size(); ++i) S::step_particle(system.arrays(), i, parameters);
-  system.finish_step();
+  auto view = system.begin_step(other);
+  REQUIRE(view.size() == system.size());
+  for (std::size_t i = 0; i < view.size(); ++i) view.step_particle(i);
+  system.finish_step(std::move(view));
   for (auto& particle : particles) particle.integrate(other);
   REQUIRE(matches(system, particles));
   step_both(fixed);

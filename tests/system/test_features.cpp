@@ -31,7 +31,7 @@ using pointmass::test::same_bits;
 
 template <class System>
 std::size_t stored_arrays(const System& system) {
-  const auto& a = system.arrays();
+  const auto& a = pointmass::detail::SystemAccess::arrays(system);
   const void* pointers[] = {
       a.position_x, a.position_y,     a.position_z,     a.velocity_x,     a.velocity_y,
       a.velocity_z, a.acceleration_x, a.acceleration_y, a.acceleration_z, a.inverse_mass,
@@ -94,8 +94,8 @@ TEST_CASE_TEMPLATE("each feature stores its arrays, and nothing else", R, float,
   CHECK(stored_arrays(Forced(10)) == 10);
   CHECK(stored_arrays(Aging(10)) == 8);
   CHECK(stored_arrays(Everything(10)) == 16);
-  CHECK(Accelerated(10).arrays().inverse_mass == nullptr);
-  CHECK(Forced(10).arrays().acceleration_x == nullptr);
+  CHECK(pointmass::detail::SystemAccess::arrays(Accelerated(10)).inverse_mass == nullptr);
+  CHECK(pointmass::detail::SystemAccess::arrays(Forced(10)).acceleration_x == nullptr);
 }
 
 TEST_CASE_TEMPLATE(
@@ -126,11 +126,11 @@ TEST_CASE_TEMPLATE(
   uniform.step(R(0));
   CHECK(CountingPerSecond::factor_calls == 4);  // a zero step computes none
   // A loop of one's own reads the kept factors for the kept length and computes others,
-  // without keeping them (step_parameters does not change the system).
-  static_cast<void>(uniform.step_parameters(R(0.1)));
+  // without keeping them (begin_step does not change the system's kept factors).
+  static_cast<void>(uniform.begin_step(R(0.1)));
   CHECK(CountingPerSecond::factor_calls == 4);
-  static_cast<void>(uniform.step_parameters(R(0.3)));
-  static_cast<void>(uniform.step_parameters(R(0.3)));
+  static_cast<void>(uniform.begin_step(R(0.3)));
+  static_cast<void>(uniform.begin_step(R(0.3)));
   CHECK(CountingPerSecond::factor_calls == 6);
   CountingPerSecond::factor_calls = 0;
   for (int step = 0; step < 3; ++step) each.step(R(0.1));
@@ -146,11 +146,12 @@ TEST_CASE_TEMPLATE("arrays share one block, 64-byte aligned, staggered within th
     CAPTURE(capacity);
     ParticleSystem<R> sparks(capacity);
     Everything everything(capacity);
-    static_assert(Everything::array_count == 19);  // the damping state in three columns, d^t
+    static_assert(pointmass::detail::SystemAccess::Layout<Everything>::array_count ==
+                  19);  // the damping state in three columns, d^t
     for (const std::size_t arrays : {std::size_t{6}, std::size_t{19}}) {
       CAPTURE(arrays);
-      const auto& a = sparks.arrays();
-      const auto& b = everything.arrays();
+      const auto& a = pointmass::detail::SystemAccess::arrays(sparks);
+      const auto& b = pointmass::detail::SystemAccess::arrays(everything);
       std::vector<std::uintptr_t> starts;
       if (arrays == 6) {
         for (const R* p :
@@ -201,7 +202,7 @@ TEST_CASE_TEMPLATE("spawn, kill by index and by predicate: swap-remove", R, floa
   REQUIRE(system.size() == 2);
   std::multiset<R> left{system.position(0).x, system.position(1).x};
   CHECK(left == std::multiset<R>{R(3), R(5)});
-  CHECK(system.position_x().size() == 2);
+  CHECK(system.template column<pointmass::Column::position_x>().size() == 2);
   system.clear();
   CHECK(system.empty());
 
@@ -285,9 +286,12 @@ TEST_CASE_TEMPLATE(
     const std::size_t i = system.spawn({R(n), R(0), R(0)}, {});
     system.set_lifetime(i, n % 2 == 0 ? exact : longer);
   }
-  CHECK(system.expired(exact, exact));
-  CHECK_FALSE(system.expired(std::nextafter(exact, R(0)), exact));
-  CHECK_FALSE(system.expired(real_infinity<R>, real_infinity<R>));  // never, even overflowed
+  const auto expired = [](R age, R lifetime) {
+    return pointmass::detail::SystemAccess::expired<decltype(system)>(age, lifetime);
+  };
+  CHECK(expired(exact, exact));
+  CHECK_FALSE(expired(std::nextafter(exact, R(0)), exact));
+  CHECK_FALSE(expired(real_infinity<R>, real_infinity<R>));  // never, even overflowed
   const auto alive = [&] {
     std::vector<std::size_t> names;
     for (std::size_t i = 0; i < system.size(); ++i) {
@@ -319,10 +323,10 @@ TEST_CASE_TEMPLATE("capacity is reserved up front, a step keeps the block, growt
   std::mt19937 engine(1);
   for (int i = 0; i < 64; ++i)
     system.spawn(random_vector(engine, R(10)), random_vector(engine, R(10)));
-  const R* block = system.position_x().data();
+  const R* block = system.template column<pointmass::Column::position_x>().data();
   for (int i = 0; i < 5; ++i) system.step(R(0.01));
   CHECK(system.capacity() == 64);
-  CHECK(system.position_x().data() == block);
+  CHECK(system.template column<pointmass::Column::position_x>().data() == block);
 
   ParticleSystem<R> before = system;  // a copy, to compare after growing
   system.spawn({}, {});               // beyond capacity: the block doubles
@@ -340,9 +344,9 @@ TEST_CASE_TEMPLATE("capacity is reserved up front, a step keeps the block, growt
 TEST_CASE_TEMPLATE("spans view the live particles and write through", R, float, double) {
   ParticleSystem<R, damping::None, position::Euler, features::ForceAccumulator> system(10);
   for (int i = 0; i < 3; ++i) system.spawn({R(i), R(2 * i), R(3 * i)}, {});
-  CHECK(system.position_y().size() == 3);
-  CHECK(system.position_y()[2] == R(4));
-  system.velocity_x()[1] = R(10);
+  CHECK(system.template column<pointmass::Column::position_y>().size() == 3);
+  CHECK(system.template column<pointmass::Column::position_y>()[2] == R(4));
+  system.template column<pointmass::Column::velocity_x>()[1] = R(10);
   system.step(R(0.5));
   CHECK(system.position(1).x == R(1) + R(10) * R(0.5));
   system.template column<Column::inverse_mass>()[1] = R(0);  // immovable from now on
@@ -352,13 +356,13 @@ TEST_CASE_TEMPLATE("spans view the live particles and write through", R, float, 
   ParticleSystem<R> drawn;
   drawn.spawn({R(1), R(2), R(3)}, {R(4), R(5), R(6)});
   const auto& seen = drawn;
-  CHECK(seen.position_x()[0] == R(1));
-  CHECK(seen.position_y()[0] == R(2));
-  CHECK(seen.position_z()[0] == R(3));
-  CHECK(seen.velocity_x()[0] == R(4));
-  CHECK(seen.velocity_y()[0] == R(5));
-  CHECK(seen.velocity_z()[0] == R(6));
-  CHECK(seen.velocity_z().size() == 1);
+  CHECK(seen.template column<pointmass::Column::position_x>()[0] == R(1));
+  CHECK(seen.template column<pointmass::Column::position_y>()[0] == R(2));
+  CHECK(seen.template column<pointmass::Column::position_z>()[0] == R(3));
+  CHECK(seen.template column<pointmass::Column::velocity_x>()[0] == R(4));
+  CHECK(seen.template column<pointmass::Column::velocity_y>()[0] == R(5));
+  CHECK(seen.template column<pointmass::Column::velocity_z>()[0] == R(6));
+  CHECK(seen.template column<pointmass::Column::velocity_z>().size() == 1);
 }
 
 /// True when System's column C is given read-only, as a span of const R.
@@ -492,7 +496,7 @@ TEST_CASE_TEMPLATE("the facets add members and no bytes", R, float, double) {
   static_assert(requires(const Full& s) { s.inverse_mass(std::size_t{0}); });
   static_assert(!requires(const Sparks& s) { s.age(std::size_t{0}); });
   static_assert(requires(const Full& s) { s.age(std::size_t{0}); });
-  static_assert(!Sparks::template has_column<Tag> && Full::template has_column<Tag>);
+  static_assert(!Sparks::template has<Tag> && Full::template has<Tag>);
   static_assert(requires(const Full& s) { s.template column<Tag>(std::size_t{0}); });
   // Both column families answer on the same system: neither facet hides the other.
   static_assert(requires(Full & s) {
@@ -509,5 +513,5 @@ TEST_CASE_TEMPLATE("the facets add members and no bytes", R, float, double) {
   CHECK(system.template column<Column::lifetime>()[i] == R(2));
   CHECK(system.inverse_mass(i) == R(0.25));
   CHECK(system.find(system.handle(i)) == std::optional<std::size_t>(i));
-  CHECK(system.position_x()[i] == R(1));
+  CHECK(system.template column<pointmass::Column::position_x>()[i] == R(1));
 }

@@ -148,7 +148,7 @@ TEST_CASE("user columns: given at spawn, T{} otherwise, written by span and inde
       ParticleSystem<float, damping::None, position::Euler, features::Column<ColourTag, Colour>,
                      features::Column<SpawnTag, int>>;
   static_assert(Painted::storage_bytes_per_particle == 24 + 4 + 4);
-  static_assert(Painted::array_count == 8);
+  static_assert(pointmass::detail::SystemAccess::Layout<Painted>::array_count == 8);
   Painted system;
   const std::size_t red = system.spawn({1, 0, 0}, {}, Colour{255, 0, 0, 255}, 7);
   const std::size_t plain = system.spawn({2, 0, 0}, {});
@@ -229,7 +229,7 @@ TEST_CASE("handles: live handles find their particle, dead ones nothing, after a
   }
   CHECK(dead.size() > 3000);
   // Slots were reused (the table is far smaller than the number of particles ever spawned).
-  CHECK(system.handle_table_bytes() < std::size_t{next_id} * 8 / 4);
+  CHECK(pointmass::detail::SystemAccess::handle_table_bytes(system) < std::size_t{next_id} * 8 / 4);
   CHECK_FALSE(system.find(Named::Handle{}).has_value());  // a default handle names nothing
 }
 
@@ -271,7 +271,7 @@ TEST_CASE("handles: a moved-from system starts a new table (no free slot it does
   CHECK(assigned.find(kept) == std::optional<std::size_t>{0});
   for (Named* moved_from : {&source, &target}) {
     REQUIRE(moved_from->size() == 0);
-    CHECK(moved_from->handle_table_bytes() == 0);
+    CHECK(pointmass::detail::SystemAccess::handle_table_bytes(*moved_from) == 0);
     const Named::Handle first =
         moved_from->spawn_handle(Vector3<double>{1, 2, 3}, Vector3<double>{});
     const Named::Handle second =
@@ -604,19 +604,19 @@ TEST_CASE("a feature not chosen costs nothing: the configurations' bytes and arr
   // checks the same): 6 numbers per particle, +2 Lifetime, +4 ForceAccumulator, +3
   // PerParticleAcceleration.
   static_assert(ParticleSystem<float>::storage_bytes_per_particle == 24);
-  static_assert(ParticleSystem<float>::array_count == 6);
+  static_assert(pointmass::detail::SystemAccess::Layout<ParticleSystem<float>>::array_count == 6);
   static_assert(ParticleSystem<double, damping::None>::storage_bytes_per_particle == 48);
   static_assert(ParticleSystem<float, damping::None, position::Euler,
                                features::Lifetime>::storage_bytes_per_particle == 32);
   // The raw arrays gain pointers for the new columns (nullptr, never walked), nothing for
   // absent user columns; the system object gains nothing for absent handles.
   using Lean = ParticleSystem<float>;
-  static_assert(sizeof(Lean::Arrays) == 26 * sizeof(float*) + sizeof(std::size_t));
+  static_assert(sizeof(Lean::StepView::Arrays) == 26 * sizeof(float*) + sizeof(std::size_t));
   // The object beside its arrays: block pointer and capacity, two flags, d and ln d (hi, lo),
   // the acceleration: 48 bytes on a 64-bit target, as before (measured on the commit before);
   // and the last step's length and its factor d^t, kept for the next step of that length: 8.
   // (a static_assert under `if constexpr` outside a template is checked on every target)
-  static_assert(sizeof(void*) != 8 || sizeof(Lean) - sizeof(Lean::Arrays) == 56);
+  static_assert(sizeof(void*) != 8 || sizeof(Lean) - sizeof(Lean::StepView::Arrays) == 56);
   // Each feature adds exactly its own columns.
   static_assert(ParticleSystem<float, damping::None, position::Euler,
                                features::Interpolation>::storage_bytes_per_particle == 36);

@@ -106,9 +106,9 @@ TEST_CASE("a parallel step keeps each particle's d^t for its step length, as the
   for (const float t : lengths) {
     serial.step(t);
     pointmass::step(std::execution::par_unseq, parallel, t);
-    CHECK_FALSE(serial.step_parameters(t).refresh);
-    CHECK_FALSE(parallel.step_parameters(t).refresh);  // d^t kept for t: no refresh pass
-    CHECK(parallel.step_parameters(t / 2).refresh);    // another length: computed again
+    CHECK_FALSE(serial.begin_step(t).parameters().refresh);
+    CHECK_FALSE(parallel.begin_step(t).parameters().refresh);  // d^t kept for t: no refresh
+    CHECK(parallel.begin_step(t / 2).parameters().refresh);    // another length: computed again
   }
   bool same = true;
   for (std::size_t i = 0; i < serial.size(); ++i) {
@@ -122,7 +122,7 @@ TEST_CASE_TEMPLATE(
     "a parallel step keeps the uniform damping factors for its step length, as "
     "the serial one",
     R, float, double) {
-  // step keeps the factors of its last length (ParticleSystem::step_parameters reads them);
+  // step keeps the factors of its last length (ParticleSystem::begin_step reads them);
   // the parallel step must keep them too, forget them with set_damping, and step as the
   // serial step does with them, bit for bit.
   using System = ParticleSystem<R, pointmass::test::CountingPerSecond>;
@@ -141,8 +141,8 @@ TEST_CASE_TEMPLATE(
   CHECK(calls == 1);  // a fixed step: computed once, then kept
   pointmass::step(std::execution::par_unseq, parallel, R(0.2));
   CHECK(calls == 2);  // a new length
-  static_cast<void>(parallel.step_parameters(R(0.2)));
-  CHECK(calls == 2);  // what the parallel step kept, step_parameters reads
+  static_cast<void>(parallel.begin_step(R(0.2)));
+  CHECK(calls == 2);  // what the parallel step kept, begin_step reads
   parallel.set_damping(R(0.9));
   pointmass::step(std::execution::par_unseq, parallel, R(0.2));
   CHECK(calls == 3);  // a new damping, the same length
@@ -211,7 +211,8 @@ TEST_CASE("a parallel step under FlushDenormals flushes on every thread, as the 
   std::size_t subnormal = 0;
   std::size_t different = 0;
   for (std::size_t i = 0; i < count; ++i) {
-    subnormal += std::fpclassify(parallel.velocity_x()[i]) == FP_SUBNORMAL;
+    subnormal += std::fpclassify(parallel.template column<pointmass::Column::velocity_x>()[i]) ==
+                 FP_SUBNORMAL;
     different += !same_bits(parallel.velocity(i), serial.velocity(i));
   }
   CHECK(subnormal == 0);

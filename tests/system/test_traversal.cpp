@@ -37,8 +37,10 @@ void step_side_by_side(std::size_t count, int steps, Walk walk) {
   std::mt19937 engine(static_cast<unsigned>(count));
   const Vector3<R> gravity{R(0), R(-9.807), R(0)};
   System system(count);
-  if constexpr (!System::per_particle_acceleration) system.set_acceleration(gravity);
-  if constexpr (System::stores_damping && !System::per_particle_damping) {
+  if constexpr (!System::template has<pointmass::features::PerParticleAcceleration>)
+    system.set_acceleration(gravity);
+  if constexpr (System::stores_damping &&
+                !System::template has<pointmass::features::PerParticleDamping>) {
     system.set_damping(R(0.6));
   }
   std::vector<Particle<R, D, P>> particles(count);
@@ -50,24 +52,25 @@ void step_side_by_side(std::size_t count, int steps, Walk walk) {
   for (auto& particle : particles) {
     particle.set_position(random_vector(engine, R(100)));
     particle.set_velocity(random_vector(engine, R(30)));
-    if constexpr (System::per_particle_acceleration) {
+    if constexpr (System::template has<pointmass::features::PerParticleAcceleration>) {
       particle.set_acceleration(random_vector(engine, R(20)));
     } else {
       particle.set_acceleration(gravity);
     }
-    if constexpr (System::per_particle_damping) {
+    if constexpr (System::template has<pointmass::features::PerParticleDamping>) {
       particle.set_damping(damping(engine));
     } else if constexpr (System::stores_damping) {
       particle.set_damping(R(0.6));
     }
-    if constexpr (System::has_forces) particle.set_mass(mass(engine));
+    if constexpr (System::template has<pointmass::features::ForceAccumulator>)
+      particle.set_mass(mass(engine));
     rejected += system.spawn(particle) == System::npos ? 1 : 0;
   }
   REQUIRE(rejected == 0);
   REQUIRE(matches(system, particles));
   // The lifetimes of particles[k] and of the system's particle k (until a step expires some).
   std::vector<R> lifetimes(count, real_infinity<R>);
-  if constexpr (System::has_lifetime) {
+  if constexpr (System::template has<pointmass::features::Lifetime>) {
     for (std::size_t i = 0; i < count; ++i) {
       lifetimes[i] = lifetime(engine);
       system.set_lifetime(i, lifetimes[i]);
@@ -77,7 +80,7 @@ void step_side_by_side(std::size_t count, int steps, Walk walk) {
   for (int step = 0; step < steps; ++step) {
     CAPTURE(step);
     const R t = R(1) / R(60 + step);
-    if constexpr (System::has_forces) {
+    if constexpr (System::template has<pointmass::features::ForceAccumulator>) {
       for (std::size_t i = 0; i < system.size(); ++i) {
         const Vector3<R> force = random_vector(engine, R(5));
         system.add_force(i, force);
@@ -85,14 +88,17 @@ void step_side_by_side(std::size_t count, int steps, Walk walk) {
       }
     }
     if (walk == Walk::backward_only) {
-      System::step_range_backward(system.arrays(), 0, system.size(), system.step_parameters(t));
-      system.finish_step();
+      auto view = system.begin_step(t);
+      pointmass::detail::SystemAccess::Kernel<System>::step_range_backward(
+          view.arrays(), 0, view.size(), view.parameters());
+      system.finish_step(std::move(view));
     } else {
-      CHECK(system.next_step_backward() == (walk == Walk::by_step_alternating && step % 2 == 1));
+      CHECK(pointmass::detail::SystemAccess::next_step_backward(system) ==
+            (walk == Walk::by_step_alternating && step % 2 == 1));
       system.step(t);
     }
     for (auto& particle : particles) particle.integrate(t);
-    if constexpr (System::has_lifetime) {
+    if constexpr (System::template has<pointmass::features::Lifetime>) {
       // Expiry reorders the survivors: find each of the system's particles by its position's
       // bits among the Particles, and check it is one that should survive, in full.
       age += t;
@@ -122,7 +128,7 @@ void step_side_by_side(std::size_t count, int steps, Walk walk) {
     }
     REQUIRE(matches(system, particles));
   }
-  if constexpr (System::has_lifetime) {
+  if constexpr (System::template has<pointmass::features::Lifetime>) {
     CHECK(system.size() > 0);      // some lived through the run,
     CHECK(system.size() < count);  // and some expired in it
   }
@@ -132,8 +138,10 @@ void step_side_by_side(std::size_t count, int steps, Walk walk) {
 
 TEST_CASE_TEMPLATE("backward walk: every particle takes its own step, once", R, float, double) {
   using System = ParticleSystem<R>;
-  static_assert(System::backward_chunk % System::vector_block == 0);
-  constexpr std::size_t chunk = System::backward_chunk;
+  static_assert(pointmass::detail::SystemAccess::Kernel<System>::backward_chunk %
+                    pointmass::detail::SystemAccess::Kernel<System>::vector_block ==
+                0);
+  constexpr std::size_t chunk = pointmass::detail::SystemAccess::Kernel<System>::backward_chunk;
   for (const std::size_t count : {std::size_t{1}, std::size_t{15}, std::size_t{16}, chunk - 1,
                                   chunk, chunk + 1, 3 * chunk + 17, std::size_t{1000}}) {
     step_side_by_side<R, damping::PerSecond, position::Euler>(count, 3, Walk::backward_only);
@@ -146,9 +154,10 @@ TEST_CASE_TEMPLATE("alternating walk with per-particle values, forces and lifeti
                                   features::PerParticleAcceleration, features::ForceAccumulator,
                                   features::Lifetime>;
   constexpr std::size_t count =
-      2 * Featured::alternation_floor_bytes / Featured::storage_bytes_per_particle +
-      Featured::backward_chunk / 2;
-  REQUIRE(Featured::alternates(count));
+      2 * pointmass::detail::SystemAccess::Kernel<Featured>::alternation_floor_bytes /
+          Featured::storage_bytes_per_particle +
+      pointmass::detail::SystemAccess::Kernel<Featured>::backward_chunk / 2;
+  REQUIRE(pointmass::detail::SystemAccess::Kernel<Featured>::alternates(count));
   step_side_by_side<R, damping::Exact, position::Exact, features::PerParticleDamping,
                     features::PerParticleAcceleration, features::ForceAccumulator,
                     features::Lifetime>(count, 4, Walk::by_step_alternating);
@@ -160,12 +169,14 @@ TEST_CASE_TEMPLATE("the walk alternates between its size bounds and walks forwar
                    float, double) {
   using System = ParticleSystem<R>;
   constexpr std::size_t bytes = System::storage_bytes_per_particle;
-  constexpr std::size_t smallest = System::alternation_floor_bytes / bytes + 1;
-  constexpr std::size_t largest = System::alternation_limit_bytes / bytes;
-  CHECK_FALSE(System::alternates(smallest - 1));
-  CHECK(System::alternates(smallest));
-  CHECK(System::alternates(largest));
-  CHECK_FALSE(System::alternates(largest + 1));
+  constexpr std::size_t smallest =
+      pointmass::detail::SystemAccess::Kernel<System>::alternation_floor_bytes / bytes + 1;
+  constexpr std::size_t largest =
+      pointmass::detail::SystemAccess::Kernel<System>::alternation_limit_bytes / bytes;
+  CHECK_FALSE(pointmass::detail::SystemAccess::Kernel<System>::alternates(smallest - 1));
+  CHECK(pointmass::detail::SystemAccess::Kernel<System>::alternates(smallest));
+  CHECK(pointmass::detail::SystemAccess::Kernel<System>::alternates(largest));
+  CHECK_FALSE(pointmass::detail::SystemAccess::Kernel<System>::alternates(largest + 1));
   using PerSecondEuler = void (*)(std::size_t, int, Walk);
   const PerSecondEuler check = step_side_by_side<R, damping::PerSecond, position::Euler>;
   check(smallest - 1, 3, Walk::by_step_forwards);
@@ -178,25 +189,27 @@ TEST_CASE_TEMPLATE("a copy starts forwards, a move or swap takes the direction a
                    double) {
   using System = ParticleSystem<R>;
   constexpr std::size_t count =
-      2 * System::alternation_floor_bytes / System::storage_bytes_per_particle;
-  REQUIRE(System::alternates(count));
+      2 * pointmass::detail::SystemAccess::Kernel<System>::alternation_floor_bytes /
+      System::storage_bytes_per_particle;
+  REQUIRE(pointmass::detail::SystemAccess::Kernel<System>::alternates(count));
   System system(count);
   std::mt19937 engine(3);
   for (std::size_t i = 0; i < count; ++i) {
     system.spawn(random_vector(engine, R(10)), random_vector(engine, R(1)));
   }
   system.step(R(1) / R(60));
-  REQUIRE(system.next_step_backward());
+  REQUIRE(pointmass::detail::SystemAccess::next_step_backward(system));
 
   const System copy(system);
-  CHECK_FALSE(copy.next_step_backward());
+  CHECK_FALSE(pointmass::detail::SystemAccess::next_step_backward(copy));
 
   System other;
   other.swap(system);
-  CHECK(other.next_step_backward());
-  CHECK_FALSE(system.next_step_backward());
+  CHECK(pointmass::detail::SystemAccess::next_step_backward(other));
+  CHECK_FALSE(pointmass::detail::SystemAccess::next_step_backward(system));
 
   const System moved(std::move(other));
-  CHECK(moved.next_step_backward());
-  CHECK_FALSE(other.next_step_backward());  // NOLINT(bugprone-use-after-move): reset by the move
+  CHECK(pointmass::detail::SystemAccess::next_step_backward(moved));
+  CHECK_FALSE(pointmass::detail::SystemAccess::next_step_backward(
+      other));  // NOLINT(bugprone-use-after-move): reset by the move
 }

@@ -94,7 +94,8 @@ void step_probe(ProbedSystem& system, ProbedSystem::real t) {
   static_cast<void>(t);
   system.finish_step();  // the expiry pass alone
 #elif defined(POINTMASS_PROBE_BACKWARD)
-  ProbedSystem::step_range_backward(system.arrays(), 0, system.size(), system.step_parameters(t));
+  pointmass::detail::SystemAccess::Kernel<ProbedSystem>::step_range_backward(
+      pointmass::detail::SystemAccess::arrays(system), 0, system.size(), system.step_parameters(t));
 #else
   system.step(t);
 #endif

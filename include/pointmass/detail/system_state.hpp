@@ -234,6 +234,43 @@ class SystemState {
     store_user_columns(i, std::make_index_sequence<user_column_count>{});
     return i;
   }
+  // spawn_burst: `count` particles, made[k] = generator(k) each added by spawn_one(made[k])
+  // (npos when rejected), with removals and steps refused meanwhile (the burst's particles
+  // are the last ones); on a throw, this call's particles are removed again.
+  template <class Generator, class SpawnOne>
+  std::size_t spawn_each(std::size_t count, Generator& generator, const SpawnOne& spawn_one) {
+    make_room(count);
+    const std::size_t before = size();
+    const std::uint16_t replacements = replacements_;
+    const auto spawn_all = [&]() -> std::size_t {
+      const PassScope burst(removing_, RemovalPass::burst);
+      std::size_t spawned = 0;
+      for (std::size_t k = 0; k < count; ++k) {
+        decltype(auto) made = generator(k);
+        // The generator replaced the particles whole (assigned, swapped or moved the system):
+        // those this call added left with them, and the burst ends.
+        if (replacements_ != replacements) return 0;
+        const ReportingElement reporting("spawn_burst", k);
+        if (spawn_one(made) != static_cast<std::size_t>(-1)) ++spawned;
+      }
+      return spawned;
+    };
+#if POINTMASS_HAS_EXCEPTIONS
+    try {
+      return spawn_all();
+    } catch (...) {
+      // The last particles are this call's: removing the last moves no other particle.
+      // (Particles replaced whole by the generator are not this call's: left as they are.)
+      if (replacements_ == replacements) {
+        while (size() > before) remove(size() - 1);
+      }
+      throw;
+    }
+#else
+    static_cast<void>(before);
+    return spawn_all();
+#endif
+  }
   // Particle i takes what `particle` has and the system stores per particle: its stored
   // position bits (wide or compensated), acceleration, inverse mass, force and damping.
   void store_particle(std::size_t i, const Particle<S, D, P>& particle) {

@@ -276,6 +276,21 @@ constexpr bool check_not_stepping(const char* function, const char* argument, Re
   return false;
 }
 
+/// A view handed to finish_step: begun by this system's begin_step and not finished yet
+/// (`mine`), over the particles begin_step saw (`unchanged`); `size` is the view's.
+constexpr bool check_step_view(const char* function, bool mine, bool unchanged, std::size_t size) {
+  if (!mine) {
+    report_scalar(function, "view", "from this system's begin_step, not finished yet", size);
+    return false;
+  }
+  if (!unchanged) {
+    report_scalar(function, "view",
+                  "over the particles begin_step saw (no spawn, kill or step in between)", size);
+    return false;
+  }
+  return true;
+}
+
 /// A range of live particles: begin <= end <= size.
 constexpr bool check_range(const char* function, std::size_t begin, std::size_t end,
                            std::size_t size) {

@@ -2,18 +2,18 @@
 // pointmass/system/columns.hpp — a ParticleSystem's arrays as spans, and the user's columns.
 //
 //   system.column<Column::age>()          any column the configuration stores
-//   system.position_x(), ...              the six every system has, by name
 //   system.column<Tag>(), system.column<Tag>(i), system.set_column<Tag>(i, value)
 //                                         a column of the user's (features::Column<Tag, T>)
 //
-// SystemColumns<Base> is a facet of ParticleSystem (particle_system.hpp lists them): a class
-// template over the state below it that adds public members and no data, so a system is no
-// bigger for it. Spans are valid until the block grows or moves (a growing spawn, reserve,
+// SystemColumns<Base> is a facet of ParticleSystem: a class template over the state below it
+// that adds members and no data, so a system is no bigger for it; an implementation
+// detail, whose public members ParticleSystem re-exports (a user never names it).
+// Spans are valid until the block grows or moves (a growing spawn, reserve,
 // move, swap); an index is checked as ParticleSystem's are (POINTMASS_CHECKS).
 //
-// Owns: column<C>() for every stored Column and the named position and velocity spans; the
-// user columns' members and traits (user_columns, user_column_count, user_element_t,
-// has_column), and the traits of the table's columns (element_t, stores).
+// Owns: column<C>() for every stored Column; the user columns' members and traits
+// (user_columns, user_column_count, user_element_t, has_column), and the traits of the
+// table's columns (element_t, stores).
 // Must not include: particle_system.hpp, detail/system_state.hpp or another facet (it uses
 // only Base's arrays(), size() and valid_index(), and the layout's table in features.hpp).
 #pragma once
@@ -26,7 +26,7 @@
 #include "../detail/validate.hpp"
 #include "../features.hpp"
 
-namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 template <class Base>
 class SystemColumns : public Base {
@@ -72,31 +72,6 @@ class SystemColumns : public Base {
     // clang-format on
     return {this->arrays().*(Layout::template entry<C>::member), this->size()};
   }
-  // The arrays users read most, by name.
-  std::span<position_element> position_x() noexcept { return column<Column::position_x>(); }
-  std::span<position_element> position_y() noexcept { return column<Column::position_y>(); }
-  std::span<position_element> position_z() noexcept { return column<Column::position_z>(); }
-  std::span<R> velocity_x() noexcept { return column<Column::velocity_x>(); }
-  std::span<R> velocity_y() noexcept { return column<Column::velocity_y>(); }
-  std::span<R> velocity_z() noexcept { return column<Column::velocity_z>(); }
-  [[nodiscard]] std::span<const position_element> position_x() const noexcept {
-    return column<Column::position_x>();
-  }
-  [[nodiscard]] std::span<const position_element> position_y() const noexcept {
-    return column<Column::position_y>();
-  }
-  [[nodiscard]] std::span<const position_element> position_z() const noexcept {
-    return column<Column::position_z>();
-  }
-  [[nodiscard]] std::span<const R> velocity_x() const noexcept {
-    return column<Column::velocity_x>();
-  }
-  [[nodiscard]] std::span<const R> velocity_y() const noexcept {
-    return column<Column::velocity_y>();
-  }
-  [[nodiscard]] std::span<const R> velocity_z() const noexcept {
-    return column<Column::velocity_z>();
-  }
 
   // --- user columns (features::Column<Tag, T>) -----------------------------------------------
 
@@ -133,4 +108,4 @@ class SystemColumns : public Base {
   }
 };
 
-}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE
+}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail

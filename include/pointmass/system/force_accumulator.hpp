@@ -5,11 +5,11 @@
 //   system.set_mass(i, 2.0f);
 //   system.add_force(i, drag);            // for the next step only
 //
-// SystemForceAccumulator<Base> is a facet of ParticleSystem (particle_system.hpp lists them):
-// a class template over the state below it that adds public members and no data, so a
-// system is no bigger for it. Its members exist only with features::ForceAccumulator. The
-// step (detail/system_kernel.hpp) turns the force into acceleration and clears it; force
-// generators (forces/) write through add_force.
+// SystemForceAccumulator<Base> is a facet of ParticleSystem: a class template over the state
+// below it that adds members and no data, so a system is no bigger for it; an implementation
+// detail, whose public members ParticleSystem re-exports (a user never names it). Its members
+// exist only with features::ForceAccumulator. The step (detail/system_kernel.hpp) turns the
+// force into acceleration and clears it; force generators (forces/) write through add_force.
 //
 // Owns: inverse_mass, force_accumulator, set_mass, set_inverse_mass and add_force.
 // Must not include: particle_system.hpp, detail/system_state.hpp or another facet (it uses
@@ -22,7 +22,7 @@
 #include "../detail/validate.hpp"
 #include "../vector3.hpp"
 
-namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 template <class Base>
 class SystemForceAccumulator : public Base {
@@ -71,4 +71,4 @@ class SystemForceAccumulator : public Base {
   }
 };
 
-}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE
+}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail

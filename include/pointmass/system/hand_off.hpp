@@ -2,16 +2,16 @@
 // pointmass/system/hand_off.hpp — a ParticleSystem's positions handed to a renderer.
 //
 //   system.copy_positions(std::span(vertices), 8);               // interleaved vertices
-//   system.positions_relative_to(camera, std::span(offsets));    // far from the origin
+//   system.copy_positions(std::span(offsets), camera);           // far from the origin
 //
-// SystemHandOff<Base> is a facet of ParticleSystem (particle_system.hpp lists them): a class
-// template over the state below it that adds public members and no data, so a system is no
-// bigger for it. With features::Interpolation, system/interpolation.hpp copies positions
+// SystemHandOff<Base> is a facet of ParticleSystem: a class template over the state below it
+// that adds members and no data, so a system is no bigger for it; an implementation
+// detail, whose public members ParticleSystem re-exports (a user never names it).
+// With features::Interpolation, system/interpolation.hpp copies positions
 // between two steps the same ways.
 //
-// Owns: both copy_positions (strided numbers, vectors with x, y, z members),
-// positions_relative_to and position_relative_to (the camera-relative float positions of
-// precision.hpp).
+// Owns: copy_positions (strided numbers, vectors with x, y, z members, float offsets from an
+// origin) and position_relative_to (the camera-relative float positions of precision.hpp).
 // Must not include: particle_system.hpp, detail/system_state.hpp or another facet (it uses
 // only Base's arrays(), size(), valid_index() and its copy-out of positions).
 #pragma once
@@ -26,7 +26,7 @@
 #include "../detail/validate.hpp"
 #include "../vector3.hpp"
 
-namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 template <class Base>
 class SystemHandOff : public Base {
@@ -72,17 +72,17 @@ class SystemHandOff : public Base {
 #endif
     return Base::template relative<T>(this->arrays(), i, origin);
   }
-  /// Every particle's position relative to `origin`, as float, into `buffer` (at least
-  /// size() elements; element i for particle i): what a renderer uploads. A non-finite
-  /// origin or a buffer too small is reported and nothing is written.
-  void positions_relative_to(const Vector3<position_value>& origin,
-                             std::span<Vector3<float>> buffer) const {
-    if (!detail::check_finite("positions_relative_to", "origin", origin) ||
-        !detail::check_buffer("positions_relative_to", "buffer", buffer.size(), this->size())) {
+  /// Every particle's position relative to `origin` (a camera), as float, into `out` (at
+  /// least size() elements; element i for particle i): what a renderer uploads when the
+  /// world is large (precision.hpp). A non-finite origin or a buffer too small is reported
+  /// and nothing is written.
+  void copy_positions(std::span<Vector3<float>> out, const Vector3<position_value>& origin) const {
+    if (!detail::check_finite("copy_positions", "origin", origin) ||
+        !detail::check_buffer("copy_positions", "out", out.size(), this->size())) {
       return;
     }
-    Base::template relative_all<float>(this->arrays(), origin, buffer.data());
+    Base::template relative_all<float>(this->arrays(), origin, out.data());
   }
 };
 
-}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE
+}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail

@@ -4,9 +4,10 @@
 //   const auto h = system.handle(i);      i's name for as long as it lives
 //   if (const auto i = system.find(h)) system.kill(*i);
 //
-// SystemHandles<Base> is a facet of ParticleSystem (particle_system.hpp lists them): a class
-// template over the state below it that adds public members and no data, so a system is no
-// bigger for it. Its members exist only with features::Handles (or BasicHandles<G>).
+// SystemHandles<Base> is a facet of ParticleSystem: a class template over the state below it
+// that adds members and no data, so a system is no bigger for it; an implementation
+// detail, whose public members ParticleSystem re-exports (a user never names it).
+// Its members exist only with features::Handles (or BasicHandles<G>).
 // spawn_handle is ParticleSystem's own, beside the other spawns.
 //
 // Owns: the Handle type and handle, find, contains and handle_table_bytes.
@@ -23,7 +24,7 @@
 #include "../config.hpp"
 #include "../detail/handle_table.hpp"
 
-namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 template <class Base>
 class SystemHandles : public Base {
@@ -60,4 +61,4 @@ class SystemHandles : public Base {
   }
 };
 
-}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE
+}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail

@@ -4,9 +4,10 @@
 //
 //   system.copy_interpolated_positions(clock.alpha(), std::span(vertices));  // what to draw
 //
-// SystemInterpolation<Base> is a facet of ParticleSystem (particle_system.hpp lists them): a
-// class template over the state below it that adds public members and no data, so a system
-// is no bigger for it. Its members exist only with features::Interpolation. The previous
+// SystemInterpolation<Base> is a facet of ParticleSystem: a class template over the state below it
+// that adds members and no data, so a system is no bigger for it; an implementation
+// detail, whose public members ParticleSystem re-exports (a user never names it).
+// Its members exist only with features::Interpolation. The previous
 // positions are kept by the step (detail/system_kernel.hpp) and moved with a jump
 // (set_position); fixed_step.hpp's FixedStep gives the fraction alpha.
 //
@@ -25,7 +26,7 @@
 #include "../detail/validate.hpp"
 #include "../vector3.hpp"
 
-namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 template <class Base>
 class SystemInterpolation : public Base {
@@ -83,4 +84,4 @@ class SystemInterpolation : public Base {
   }
 };
 
-}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE
+}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail

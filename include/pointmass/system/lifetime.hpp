@@ -4,9 +4,10 @@
 //
 //   system.set_lifetime(i, 2.0f);         // removed by the step after which its age reaches 2 s
 //
-// SystemLifetime<Base> is a facet of ParticleSystem (particle_system.hpp lists them): a class
-// template over the state below it that adds public members and no data, so a system is no
-// bigger for it. Its members exist only with features::Lifetime. The step ages the particles
+// SystemLifetime<Base> is a facet of ParticleSystem: a class template over the state below it
+// that adds members and no data, so a system is no bigger for it; an implementation
+// detail, whose public members ParticleSystem re-exports (a user never names it).
+// Its members exist only with features::Lifetime. The step ages the particles
 // (detail/system_kernel.hpp) and expires them (ParticleSystem::step, finish_step, with an
 // optional callback: particle_system.hpp).
 //
@@ -20,7 +21,7 @@
 #include "../config.hpp"
 #include "../detail/validate.hpp"
 
-namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 template <class Base>
 class SystemLifetime : public Base {
@@ -48,4 +49,4 @@ class SystemLifetime : public Base {
   }
 };
 
-}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE
+}  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail

@@ -25,10 +25,10 @@ __global__ void step_particles(Body* bodies, int count, typename Body::real dura
 }
 
 template <class System>
-__global__ void step_system(typename System::Arrays arrays,
-                            typename System::StepParameters parameters) {
+__global__ void step_system(typename System::StepView::Arrays arrays,
+                            typename System::StepView::Parameters parameters) {
   const std::size_t i = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
-  if (i < arrays.size) System::step_particle(arrays, i, parameters);
+  if (i < arrays.size) System::StepView::step_particle(arrays, i, parameters);
 }
 
 template <class Body>
@@ -41,9 +41,9 @@ void launch_system(System& system, typename System::real duration) {
   // On a real device the arrays would be copied to device memory first; the kernel is the
   // same either way.
   const auto count = static_cast<unsigned>(system.size());
-  step_system<System>
-      <<<(count + 255) / 256, 256>>>(system.arrays(), system.step_parameters(duration));
-  system.finish_step();
+  auto view = system.begin_step(duration);
+  step_system<System><<<(count + 255) / 256, 256>>>(view.arrays(), view.parameters());
+  system.finish_step(std::move(view));
 }
 
 template <class R>

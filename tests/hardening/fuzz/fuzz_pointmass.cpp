@@ -560,7 +560,7 @@ template <class System>
 void check_stored_position(const System& system, std::size_t i,
                            const Vector3<typename System::position_value>& p) {
   using R = typename System::real;
-  const auto& a = system.arrays();
+  const auto& a = pointmass::detail::SystemAccess::arrays(system);
   if constexpr (compensated_positions<System>) {
     const Vector3<R> hi{expected_hi<R>(p.x), expected_hi<R>(p.y), expected_hi<R>(p.z)};
     const Vector3<R> lo{expected_lo<R>(p.x), expected_lo<R>(p.y), expected_lo<R>(p.z)};
@@ -577,7 +577,7 @@ void check_stored_position(const System& system, std::size_t i,
 // The user column of the systems with the game features (features::Column<FuzzOwner, int>).
 struct FuzzOwner {};
 template <class System>
-inline constexpr bool has_owner_column = System::template has_column<FuzzOwner>;
+inline constexpr bool has_owner_column = System::template has<FuzzOwner>;
 
 template <class System>
 class Mirror {
@@ -636,8 +636,10 @@ class Mirror {
     Body body;
     body.set_position(p);
     body.set_velocity(v);
-    if constexpr (!System::per_particle_acceleration) body.set_acceleration(acceleration);
-    if constexpr (System::stores_damping && !System::per_particle_damping)
+    if constexpr (!System::template has<pointmass::features::PerParticleAcceleration>)
+      body.set_acceleration(acceleration);
+    if constexpr (System::stores_damping &&
+                  !System::template has<pointmass::features::PerParticleDamping>)
       body.set_damping(damping);
     push(body, owner);
   }
@@ -656,7 +658,7 @@ class Mirror {
     owners.pop_back();
   }
   void note_acceleration(const Vector3<R>& a) {
-    if constexpr (!System::has_forces) {
+    if constexpr (!System::template has<pointmass::features::ForceAccumulator>) {
       const auto negative_zero = [](R x) { return x == R(0) && std::signbit(x); };
       if (negative_zero(a.x) || negative_zero(a.y) || negative_zero(a.z))
         zero_signs_may_differ = true;
@@ -671,7 +673,7 @@ class Mirror {
     return age >= lifetime && lifetime != std::numeric_limits<R>::infinity();
   }
   void expire() {
-    if constexpr (System::has_lifetime) {
+    if constexpr (System::template has<pointmass::features::Lifetime>) {
       std::size_t i = 0;
       while (i < bodies.size()) {
         if (expired(ages[i], lifetimes[i])) kill(i);
@@ -689,7 +691,7 @@ class Mirror {
 template <class System>
 std::size_t immortals(const System& system) {  // particles whose lifetime is infinite
   std::size_t count = 0;
-  if constexpr (System::has_lifetime) {
+  if constexpr (System::template has<pointmass::features::Lifetime>) {
     for (std::size_t i = 0; i < system.size(); ++i) {
       count += system.lifetime(i) == std::numeric_limits<typename System::real>::infinity();
     }
@@ -701,11 +703,12 @@ template <class System>
 void compare(const System& system, const Mirror<System>& mirror, const Budget& budget) {
   using R = typename System::real;
   require(system.size() == mirror.size(), "system and mirror differ in size");
-  require(system.arrays().size == system.size(), "arrays().size differs from size()");
+  require(pointmass::detail::SystemAccess::arrays(system).size == system.size(),
+          "arrays().size differs from size()");
   require(system.capacity() >= system.size(), "capacity below size");
-  require(
-      system.position_x().size() == system.size() && system.velocity_z().size() == system.size(),
-      "a span's size differs from size()");
+  require(system.template column<pointmass::Column::position_x>().size() == system.size() &&
+              system.template column<pointmass::Column::velocity_z>().size() == system.size(),
+          "a span's size differs from size()");
   const bool exact = !mirror.zero_signs_may_differ;
   const auto agree = [exact](const auto& a, const auto& b) {
     return exact ? identical(a, b) : same(a, b);
@@ -715,16 +718,19 @@ void compare(const System& system, const Mirror<System>& mirror, const Budget& b
     const auto p = system.position(i);
     require(agree(p, body.position()), "system position differs from Particle");
     require(agree(system.velocity(i), body.velocity()), "system velocity differs from Particle");
-    require(identical(system.velocity_y()[i], system.velocity(i).y),
-            "a span differs from the accessor");
+    require(
+        identical(system.template column<pointmass::Column::velocity_y>()[i], system.velocity(i).y),
+        "a span differs from the accessor");
     if constexpr (plain_positions<System>) {
-      require(identical(system.position_x()[i], p.x), "a span differs from the accessor");
+      require(identical(system.template column<pointmass::Column::position_x>()[i], p.x),
+              "a span differs from the accessor");
     } else {  // the stored numbers too: the pair's hi and lo, or the wide value
-      const auto& a = system.arrays();
+      const auto& a = pointmass::detail::SystemAccess::arrays(system);
       const auto stored = body.stored_position();
       require(agree(a.position_x[i], stored.x) && agree(a.position_y[i], stored.y) &&
                   agree(a.position_z[i], stored.z) &&
-                  identical(system.position_x()[i], a.position_x[i]),
+                  identical(system.template column<pointmass::Column::position_x>()[i],
+                            a.position_x[i]),
               "a system's stored position differs from Particle");
       if constexpr (compensated_positions<System>) {
         const auto error = body.stored_position_error();
@@ -734,11 +740,11 @@ void compare(const System& system, const Mirror<System>& mirror, const Budget& b
       }
     }
     require(identical(system.acceleration(i), body.acceleration()), "acceleration differs");
-    if constexpr (System::has_forces) {
+    if constexpr (System::template has<pointmass::features::ForceAccumulator>) {
       require(identical(system.force_accumulator(i), body.force_accumulator()), "force differs");
       require(identical(system.inverse_mass(i), body.inverse_mass()), "inverse mass differs");
     }
-    if constexpr (System::has_lifetime) {
+    if constexpr (System::template has<pointmass::features::Lifetime>) {
       require(identical(system.age(i), mirror.ages[i]), "age differs");
       require(identical(system.lifetime(i), mirror.lifetimes[i]), "lifetime differs");
     }
@@ -746,11 +752,11 @@ void compare(const System& system, const Mirror<System>& mirror, const Budget& b
     if constexpr (has_owner_column<System>) {
       require(system.template column<FuzzOwner>(i) == mirror.owners[i], "user column differs");
     }
-    if constexpr (System::has_handles) {
+    if constexpr (System::template has<pointmass::features::Handles>) {
       const auto found = system.find(system.handle(i));
       require(found.has_value() && *found == i, "a live particle's handle does not find it");
     }
-    if constexpr (System::has_interpolation) {
+    if constexpr (System::template has<pointmass::features::Interpolation>) {
       const auto before = system.previous_position(i);
       require(agree(before, mirror.previous[i]), "previous position differs");
       // alpha 0 and 1: the previous and the current position columns, bit for bit
@@ -766,7 +772,7 @@ void compare(const System& system, const Mirror<System>& mirror, const Budget& b
               "finite physics gave a non-finite system particle");
     }
   }
-  if constexpr (System::has_handles) {
+  if constexpr (System::template has<pointmass::features::Handles>) {
     // Every handle taken finds the particle it named while it lives, and nothing after.
     std::unordered_map<std::uint64_t, std::size_t> index_of;
     for (std::size_t i = 0; i < mirror.size(); ++i) index_of.emplace(mirror.serials[i], i);
@@ -818,16 +824,17 @@ std::size_t pick_count(Input& in) {
     case 0: return in.byte();
     case 1: return in.word() % (reserve_limit + 1);
     case 2: {
-      const std::size_t special[] = {System::max_size() + 1,
-                                     System::max_size() + 2,
-                                     max,
-                                     max - 1,
-                                     max / 2,
-                                     max / System::storage_bytes_per_particle + 1,
-                                     max / System::array_count + 1,
-                                     max - 4095,
-                                     2 * System::max_size(),
-                                     (max >> 1) + 1};
+      const std::size_t special[] = {
+          System::max_size() + 1,
+          System::max_size() + 2,
+          max,
+          max - 1,
+          max / 2,
+          max / System::storage_bytes_per_particle + 1,
+          max / pointmass::detail::SystemAccess::Layout<System>::array_count + 1,
+          max - 4095,
+          2 * System::max_size(),
+          (max >> 1) + 1};
       return special[in.byte() % (sizeof special / sizeof special[0])];
     }
     default: {
@@ -873,7 +880,7 @@ bool exact_float_offset(long double p, long double origin, float& offset) {
 template <class System>
 bool exact_position(const System& system, std::size_t i, int k, long double& value) {
   using E = typename System::position_element;
-  const auto& a = system.arrays();
+  const auto& a = pointmass::detail::SystemAccess::arrays(system);
   const E* const stored[3] = {a.position_x, a.position_y, a.position_z};
   const long double hi = static_cast<long double>(stored[k][i]);
   value = hi;
@@ -903,15 +910,15 @@ void check_positions_relative_to(const System& system, const M& mirror, Input& i
   const std::size_t length = in.byte() % 64;
   const Vector3<float> untouched{7.0f, -7.0f, 7.0f};
   std::vector<Vector3<float>> buffer(length, untouched);
-  system.positions_relative_to(origin, std::span<Vector3<float>>(buffer));
+  system.copy_positions(std::span<Vector3<float>>(buffer), origin);
   const std::size_t n = system.size();
   if (!finite(origin) || length < n) {
-    if (!finite(origin)) expect_rejected("positions_relative_to", "origin", origin);
-    else expect_rejected("positions_relative_to", "buffer", length);
+    if (!finite(origin)) expect_rejected("copy_positions", "origin", origin);
+    else expect_rejected("copy_positions", "out", length);
     for (const auto& b : buffer) require(identical(b, untouched), "a refused hand-off wrote");
     return;
   }
-  expect_accepted("positions_relative_to");
+  expect_accepted("copy_positions");
   for (std::size_t i = 0; i < n; ++i) {
     require(identical(buffer[i], system.position_relative_to(i, origin)),
             "batch offset differs from the system's single one");
@@ -974,7 +981,8 @@ void fuzz_system(Input& in) {
           require(i == mirror.size(), "spawn index");
           check_stored_position(system, i, p);
           mirror.spawn(p, v, owner);
-          if constexpr (System::has_handles) mirror.track(system.handle(i), i);
+          if constexpr (System::template has<pointmass::features::Handles>)
+            mirror.track(system.handle(i), i);
           budget.vector(p, position_bound<System>);
           budget.vector(v);
         }
@@ -1025,7 +1033,7 @@ void fuzz_system(Input& in) {
       }
       case 5: {
         const auto a = in.vector<R>();
-        if constexpr (System::per_particle_acceleration) {
+        if constexpr (System::template has<pointmass::features::PerParticleAcceleration>) {
           system.set_acceleration(index, a);
           if (!valid_index) {
             expect_rejected("set_acceleration", "index", index);
@@ -1053,7 +1061,7 @@ void fuzz_system(Input& in) {
         if constexpr (System::stores_damping) {
           const R d = in.number<R>();
           const bool bad = d != d || d < R(0) || d > R(1);
-          if constexpr (System::per_particle_damping) {
+          if constexpr (System::template has<pointmass::features::PerParticleDamping>) {
             system.set_damping(index, d);
             if (!valid_index) expect_rejected("set_damping", "index", index);
             else if (bad) expect_rejected("set_damping", "damping", d);
@@ -1071,7 +1079,7 @@ void fuzz_system(Input& in) {
         break;
       }
       case 7: {
-        if constexpr (System::has_forces) {
+        if constexpr (System::template has<pointmass::features::ForceAccumulator>) {
           const R m = in.number<R>();
           system.set_mass(index, m);
           if (!valid_index) {
@@ -1088,7 +1096,7 @@ void fuzz_system(Input& in) {
         break;
       }
       case 8: {
-        if constexpr (System::has_forces) {
+        if constexpr (System::template has<pointmass::features::ForceAccumulator>) {
           const auto f = in.vector<R>();
           system.add_force(index, f);
           if (!valid_index) {
@@ -1104,7 +1112,7 @@ void fuzz_system(Input& in) {
         break;
       }
       case 9: {
-        if constexpr (System::has_lifetime) {
+        if constexpr (System::template has<pointmass::features::Lifetime>) {
           const R seconds = in.number<R>();
           system.set_lifetime(index, seconds);
           if (!valid_index) expect_rejected("set_lifetime", "index", index);
@@ -1117,12 +1125,9 @@ void fuzz_system(Input& in) {
       case 10: {  // the step_particle path, as a GPU loop runs it
         const R t = in.number<R>();
         if (!real_isfinite(t) || t < R(0)) break;
-        if (system.begin_step(t)) {
-          const auto parameters = system.step_parameters(t);
-          for (std::size_t i = 0; i < system.arrays().size; ++i) {
-            System::step_particle(system.arrays(), i, parameters);
-          }
-          system.finish_step();
+        if (auto view = system.begin_step(t)) {
+          for (std::size_t i = 0; i < view.size(); ++i) view.step_particle(i);
+          system.finish_step(std::move(view));
         }
         mirror.step(t);
         budget.step(1, static_cast<double>(t));
@@ -1255,7 +1260,8 @@ void fuzz_system(Input& in) {
       case 15: {  // copy construction and copy assignment
         const System copy = system;
         require(copy.capacity() == system.capacity(), "a copy has another capacity");
-        require(!copy.next_step_backward(), "a copy does not start walking forwards");
+        require(!pointmass::detail::SystemAccess::next_step_backward(copy),
+                "a copy does not start walking forwards");
         compare(copy, mirror, budget);
         const int assigned_to = in.byte() % 3;
         switch (assigned_to) {
@@ -1278,9 +1284,10 @@ void fuzz_system(Input& in) {
       }
       case 16: {  // move construction and move assignment
         const std::size_t capacity = system.capacity();
-        const bool backward = system.next_step_backward();
+        const bool backward = pointmass::detail::SystemAccess::next_step_backward(system);
         System moved(std::move(system));
-        require(moved.capacity() == capacity && moved.next_step_backward() == backward,
+        require(moved.capacity() == capacity &&
+                    pointmass::detail::SystemAccess::next_step_backward(moved) == backward,
                 "a move lost the capacity or the walk's direction");
         compare(moved, mirror, budget);
         // The moved-from system can be cleared, used and assigned to.
@@ -1292,13 +1299,15 @@ void fuzz_system(Input& in) {
         require(identical(system.position(0), Vector3<W>{W(1), W(2), W(3)}),
                 "a moved-from system lost a new particle");
         system = std::move(moved);
-        require(system.capacity() == capacity && system.next_step_backward() == backward,
+        require(system.capacity() == capacity &&
+                    pointmass::detail::SystemAccess::next_step_backward(system) == backward,
                 "a move assignment lost the capacity or the walk's direction");
         break;
       }
       case 17: {  // swap with the other system
         const std::size_t capacities[] = {system.capacity(), other.capacity()};
-        const bool directions[] = {system.next_step_backward(), other.next_step_backward()};
+        const bool directions[] = {pointmass::detail::SystemAccess::next_step_backward(system),
+                                   pointmass::detail::SystemAccess::next_step_backward(other)};
         switch (in.byte() % 3) {
           case 0: system.swap(other); break;
           case 1: swap(system, other); break;
@@ -1307,8 +1316,8 @@ void fuzz_system(Input& in) {
         std::swap(mirror, other_mirror);
         require(system.capacity() == capacities[1] && other.capacity() == capacities[0],
                 "swap did not exchange the capacities");
-        require(system.next_step_backward() == directions[1] &&
-                    other.next_step_backward() == directions[0],
+        require(pointmass::detail::SystemAccess::next_step_backward(system) == directions[1] &&
+                    pointmass::detail::SystemAccess::next_step_backward(other) == directions[0],
                 "swap did not exchange the walk's direction");
         compare(other, other_mirror, budget);
         break;
@@ -1323,19 +1332,20 @@ void fuzz_system(Input& in) {
         read("velocity", system.velocity(index));
         read("acceleration", system.acceleration(index));
         read("damping", system.damping(index));
-        if constexpr (System::has_forces) {
+        if constexpr (System::template has<pointmass::features::ForceAccumulator>) {
           read("inverse_mass", system.inverse_mass(index));
           read("force_accumulator", system.force_accumulator(index));
         }
-        if constexpr (System::has_lifetime) {
+        if constexpr (System::template has<pointmass::features::Lifetime>) {
           read("age", system.age(index));
           read("lifetime", system.lifetime(index));
         }
-        if constexpr (System::has_interpolation) {
+        if constexpr (System::template has<pointmass::features::Interpolation>) {
           read("previous_position", system.previous_position(index));
           read("interpolated_position", system.interpolated_position(index, R(0)));
         }
-        if constexpr (System::has_handles) read("handle", system.handle(index));
+        if constexpr (System::template has<pointmass::features::Handles>)
+          read("handle", system.handle(index));
         if constexpr (has_owner_column<System>) {
           read("column", system.template column<FuzzOwner>(index));
           if ((code / 23) % 2 == 1) {  // and a value of the user column set (no input read)
@@ -1350,20 +1360,21 @@ void fuzz_system(Input& in) {
       case 19: {  // step_range and step_range_backward over any ranges, then finish_step
         const R t = in.number<R>();
         const int pieces = in.byte() % 6 + 1;
-        const bool work = system.begin_step(t);
+        auto view = system.begin_step(t);
         if (!real_isfinite(t) || t < R(0)) {
           expect_rejected("begin_step", "duration", t);
           break;
         }
-        if (!work) break;
-        const auto parameters = system.step_parameters(t);
+        if (!view) break;
+        const auto parameters = view.parameters();
         for (int k = 0; k < pieces; ++k) {
           const std::size_t begin = pick_bound(in, system.size());
           const std::size_t end = pick_bound(in, system.size());
           const bool backward = in.byte() % 2 == 1;
           const char* function = backward ? "step_range_backward" : "step_range";
-          (backward ? System::step_range_backward : System::step_range)(system.arrays(), begin, end,
-                                                                        parameters);
+          (backward ? pointmass::detail::SystemAccess::Kernel<System>::step_range_backward
+                    : pointmass::detail::SystemAccess::Kernel<System>::step_range)(
+              view.arrays(), begin, end, parameters);
           if (end > system.size()) {
             expect_rejected(function, "end", end);
           } else if (begin > end) {
@@ -1374,13 +1385,13 @@ void fuzz_system(Input& in) {
           }
           compare(system, mirror, budget);
         }
-        system.finish_step();
+        system.finish_step(std::move(view));
         mirror.expire();
         stepped = true;
         break;
       }
       case 20: {
-        if constexpr (System::has_forces) {
+        if constexpr (System::template has<pointmass::features::ForceAccumulator>) {
           const R im = in.number<R>();
           system.set_inverse_mass(index, im);
           if (!valid_index) {
@@ -1418,7 +1429,8 @@ void fuzz_system(Input& in) {
           } else {
             require(i == mirror.size(), "spawn(particle) index");
             mirror.push(body);
-            if constexpr (System::has_handles) mirror.track(system.handle(i), i);
+            if constexpr (System::template has<pointmass::features::Handles>)
+              mirror.track(system.handle(i), i);
           }
         }
         break;

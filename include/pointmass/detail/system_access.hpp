@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: BSL-1.0
+// pointmass/detail/system_access.hpp — what the library's own steps (parallel.hpp,
+// kokkos.hpp) and the tests reach of a ParticleSystem beyond its public API.
+//
+// Included by particle_system.hpp, after ParticleSystem (of which SystemAccess is a friend).
+//
+// Owns: detail::SystemAccess.
+// Must not include: anything but particle_system.hpp.
+#pragma once
+
+#include <cstddef>
+#include <utility>
+
+#include "../particle_system.hpp"
+
+namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
+
+namespace detail {
+/// What ParticleSystem::step does around its walk, for the steps of parallel.hpp and
+/// kokkos.hpp, and what the tests inspect: the kernel and the table of a configuration, the
+/// arrays, and the walk's direction. A library step keeps, before its walk, the uniform damping
+/// factors for the step length, and after it the damping_retention column's d^t as this
+/// duration's (finish_step, which cannot know what a loop of the caller's did, forgets it).
+/// So the next step of the same length computes no exponential, as after step.
+struct SystemAccess {
+  template <class System>
+  using Kernel = typename System::Kernel;
+  template <class System>
+  using Layout = typename System::Layout;
+  template <class System>
+  static const typename System::Layout::Arrays& arrays(const System& system) noexcept {
+    return system.State::arrays();
+  }
+  template <class System>
+  static void arrays_changed(System& system) noexcept {
+    system.forget_retention();
+  }
+  template <class System, class R>
+  static constexpr bool expired(R age, R lifetime) noexcept {
+    return System::State::expired(age, lifetime);
+  }
+  template <class System>
+  static bool next_step_backward(const System& system) noexcept {
+    return system.backward_;
+  }
+  template <class System>
+  static std::size_t handle_table_bytes(const System& system) noexcept {
+    return system.Facets::handle_table_bytes();
+  }
+  template <class System, class R>
+  static typename System::StepView begin_step(System& system, R duration) {
+    return system.begin_view(duration, "step", true);
+  }
+  template <class System, class R>
+  static typename System::Kernel::StepParameters step_parameters(const System& system,
+                                                                 R duration) noexcept {
+    return system.State::step_parameters(duration);
+  }
+  template <class System, class R>
+  static typename System::Kernel::StepParameters keep_step_parameters(System& system, R duration) {
+    return system.keep_step_parameters(duration);
+  }
+  template <class System, class OnExpire>
+  static void finish_step(System& system, typename System::StepView&& view, OnExpire& on_expire) {
+    const typename System::StepView finished(std::move(view));
+    if (finished.size() == 0) return;
+    system.record_retention(finished.parameters().duration);
+    system.expire(on_expire);
+  }
+  template <class System>
+  static void finish_step(System& system, typename System::StepView&& view) {
+    typename System::State::NoCallback none;
+    finish_step(system, std::move(view), none);
+  }
+};
+}  // namespace detail
+
+}  // namespace pointmass
