@@ -58,7 +58,7 @@ using pm::damping::Exact;
 using pm::damping::None;
 using pm::damping::PerSecond;
 using pm::position::Euler;
-using pm::position::Kinematic;
+using pm::position::ConstantAcceleration;
 
 #define POINTMASS_PAIR(name, ...)                                                             \
   BENCHMARK_TEMPLATE(plain, __VA_ARGS__)->Name("plain/" name)->Unit(benchmark::kMicrosecond); \
@@ -66,7 +66,7 @@ using pm::position::Kinematic;
 
 POINTMASS_PAIR("float PerSecond Euler", float, PerSecond, Euler);
 POINTMASS_PAIR("double PerSecond Euler", double, PerSecond, Euler);
-POINTMASS_PAIR("float None Kinematic", float, None, Kinematic);
+POINTMASS_PAIR("float None ConstantAcceleration", float, None, ConstantAcceleration);
 POINTMASS_PAIR("double Exact Exact", double, Exact, pm::position::Exact);
 
 /// The console table as usual, plus the SI/plain ratio of each configuration's median CPU

@@ -3,12 +3,12 @@
 target_link_libraries(accuracy_comparison PRIVATE pointmass_support)
 if(POINTMASS_BUILD_TESTS)
   # The per-shot tables: in every shot, the rows of the pairs that are the model's exact flow
-  # (Exact + Exact, and None with Kinematic or Exact against the undamped model) have double
+  # (Exact + Exact, and None with ConstantAcceleration or Exact against the undamped model) have double
   # errors below 1e-9 m at every frame time (rounding: the test fails on any of them at 1e-9
   # or above), and the Exact + Exact row reads "exact" with all four below 1e-10 in at least
   # one shot; in the summary, double Exact + Exact at 1/240 s is below 1e-10 m too. Nothing is
   # NaN or infinite.
-  set(_exact_row "\\| (Exact \\+ Exact|None \\+ Kinematic|None \\+ Exact) \\|")
+  set(_exact_row "\\| (Exact \\+ Exact|None \\+ ConstantAcceleration|None \\+ Exact) \\|")
   set(_large " [0-9.]+e(\\+|-0)[0-9]+ \\|")  # an error of 1e-9 or more
   set(_any " [^|]+ \\|")
   set(_small " [0-9.]+e-1[0-9] \\|")

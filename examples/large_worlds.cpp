@@ -128,7 +128,7 @@ int main(int argc, char** argv) {
                         {0, -9.81f, 0},
                         0.9f,
                         steps};
-  const Launch sparks_1e6{"sparks from 1e6 m, per-frame drag (PerFrame, Kinematic)",
+  const Launch sparks_1e6{"sparks from 1e6 m, per-frame drag (PerFrame, ConstantAcceleration)",
                           {0, 1e6, 0},
                           {3, 8, -2},
                           {0, -9.81f, 0},
@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
                       {&free_1e8, fly<d::None, p::Euler>(free_1e8)},
                       {&shot_1e6, fly<d::Exact, p::Exact>(shot_1e6)},
                       {&shot_1e8, fly<d::Exact, p::Exact>(shot_1e8)},
-                      {&sparks_1e6, fly<d::PerFrame, p::Kinematic>(sparks_1e6)},
+                      {&sparks_1e6, fly<d::PerFrame, p::ConstantAcceleration>(sparks_1e6)},
                       {&shot_near, fly<d::Exact, p::Exact>(shot_near)},
                       {&free_near, fly<d::None, p::Euler>(free_near)}};
 

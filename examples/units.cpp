@@ -16,7 +16,7 @@
 namespace pm = pointmass;
 namespace si = boost::units::si;
 using Real = double;
-using Shell = pm::units::Particle<Real, pm::damping::PerSecond, pm::position::Kinematic>;
+using Shell = pm::units::Particle<Real, pm::damping::PerSecond, pm::position::ConstantAcceleration>;
 
 /// Puts the particle at the start of a shot: the scene's plain numbers times their SI units.
 void launch(Shell& shell, const pm::scenes::BallisticShot<Real>& shot) {

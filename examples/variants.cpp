@@ -66,7 +66,8 @@ void particle_row(const char* real, const char* damping, const char* position) {
 template <class R>
 void particle_rows(const char* real) {
   particle_row<R, damping::None, position::Euler>(real, "None", "Euler");
-  particle_row<R, damping::None, position::Kinematic>(real, "None", "Kinematic");
+  particle_row<R, damping::None, position::ConstantAcceleration>(real, "None",
+                                                                 "ConstantAcceleration");
   particle_row<R, damping::PerFrame, position::Euler>(real, "PerFrame", "Euler");
   particle_row<R, damping::PerSecond, position::Euler>(real, "PerSecond", "Euler");
   particle_row<R, damping::PerSecond, position::SemiImplicit>(real, "PerSecond", "SemiImplicit");

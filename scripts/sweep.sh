@@ -100,8 +100,8 @@ path, scene, terminal, output = sys.argv[1:5]
 rows = list(csv.DictReader(open(path)))
 colour = {"None": "#E69F00", "PerFrame": "#56B4E9", "PerSecond": "#009E73",
           "AccelerateThenDamp": "#CC79A7", "Exact": "#0072B2"}
-marker = {"Euler": 4, "Kinematic": 6, "SemiImplicit": 8, "Exact": 12}  # open; +1 filled
-marker_name = {"Euler": "square", "Kinematic": "circle", "SemiImplicit": "triangle",
+marker = {"Euler": 4, "ConstantAcceleration": 6, "SemiImplicit": 8, "Exact": 12}  # open; +1 filled
+marker_name = {"Euler": "square", "ConstantAcceleration": "circle", "SemiImplicit": "triangle",
                "Exact": "diamond"}
 title = {"ballistic": "Ballistic shots (pistol, artillery, fireball, laser; 5 s)",
          "spring": "Mass on a spring (period 1 s, undamped and damped; 10 s)",
@@ -293,8 +293,8 @@ def particle_row(a, b):  # pair a over pair b, Particle, both scenes
     row(f"`Particle`, `{a}` / `{b}`",
         lambda r: span([t("Particle", s, f"{r} {a}") / t("Particle", s, f"{r} {b}")
                         for s in ("ballistic", "spring")]))
-particle_row("None + Kinematic", "None + Euler")
-particle_row("Exact + Exact", "PerSecond + Kinematic")
+particle_row("None + ConstantAcceleration", "None + Euler")
+particle_row("Exact + Exact", "PerSecond + ConstantAcceleration")
 particle_row("Exact + Exact", "PerSecond + Euler")
 row("`Particle`, `D + SemiImplicit` / `D + Euler`, every damping D",
     lambda r: span([t("Particle", s, v.replace("Euler", "SemiImplicit")) / t("Particle", s, v)

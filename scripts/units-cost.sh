@@ -12,7 +12,7 @@ count() {  # count BINARY ARGS...: instructions executed
     sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
 }
 
-names=("float None + Kinematic" "float PerSecond + Euler" "double PerSecond + Euler"
+names=("float None + ConstantAcceleration" "float PerSecond + Euler" "double PerSecond + Euler"
        "double Exact + Exact")
 table="| variant | compiler | plain (instructions/step) | SI (instructions/step) | SI / plain |
 |---|---|---:|---:|---:|"

@@ -18,7 +18,7 @@ static_assert(sizeof(Particle<float, damping::None>) == 13 * sizeof(float));
 // Per-second damping keeps d and ln d (as hi + lo: no logarithm a step), and the last step's
 // length and factor (no exponential while the length repeats).
 static_assert(sizeof(Particle<float, damping::PerSecond>) == (13 + 3 + 2) * sizeof(float));
-static_assert(sizeof(Particle<double, damping::PerFrame, position::Kinematic>) ==
+static_assert(sizeof(Particle<double, damping::PerFrame, position::ConstantAcceleration>) ==
               14 * sizeof(double));
 static_assert(sizeof(Particle<float, damping::AccelerateThenDamp>) == (13 + 1 + 2) * sizeof(float));
 static_assert(sizeof(Particle<float, damping::Exact>) == (13 + 3 + 4) * sizeof(float));
@@ -76,7 +76,7 @@ TEST_CASE_TEMPLATE("mass and inverse mass", R, float, double) {
 
 TEST_CASE_TEMPLATE("an infinite-mass particle does not move, whatever acts on it", R, float,
                    double) {
-  Particle<R, damping::PerSecond, position::Kinematic> wall;
+  Particle<R, damping::PerSecond, position::ConstantAcceleration> wall;
   wall.set_position({R(1), R(2), R(3)});
   wall.set_velocity({R(5), R(0), R(0)});
   wall.set_acceleration(gravity(earth_gravity<R>));
@@ -89,7 +89,7 @@ TEST_CASE_TEMPLATE("an infinite-mass particle does not move, whatever acts on it
 
   // Made immovable after a step that kept its length's factors: the next step of that length
   // (the kept factors' way) does not move it either.
-  Particle<R, damping::PerSecond, position::Kinematic> ball;
+  Particle<R, damping::PerSecond, position::ConstantAcceleration> ball;
   ball.set_velocity({R(5), R(0), R(0)});
   ball.set_acceleration(gravity(earth_gravity<R>));
   ball.set_damping(R(0.5));
@@ -162,7 +162,7 @@ TEST_CASE_TEMPLATE(
     R, float, double) {
   check_negative_zeros<Particle<R, damping::AccelerateThenDamp, position::Euler>>();
   check_negative_zeros<Particle<R>>();
-  check_negative_zeros<Particle<R, damping::PerFrame, position::Kinematic>>();
+  check_negative_zeros<Particle<R, damping::PerFrame, position::ConstantAcceleration>>();
 }
 
 TEST_CASE_TEMPLATE("forces accumulate for one step and act through the inverse mass", R, float,
@@ -188,7 +188,7 @@ TEST_CASE_TEMPLATE("gravity helpers", R, float, double) {
   CHECK(gravity(R(3.7)) == Vector3<R>{R(0), R(-3.7), R(0)});
   // f = m g gives the same acceleration for any mass.
   for (const R mass : {R(0.1), R(2), R(200)}) {
-    Particle<R, damping::None, position::Kinematic> p;
+    Particle<R, damping::None, position::ConstantAcceleration> p;
     p.set_mass(mass);
     p.set_acceleration(gravity<R>());
     p.integrate(R(1));

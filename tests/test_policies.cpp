@@ -171,7 +171,7 @@ TEST_CASE_TEMPLATE("values worked out by hand", R, float, double) {
                 R(4)));
   }
   SUBCASE("eq. 3.5 with p + v t + a t^2 / 2") {
-    Particle<R, damping::PerFrame, position::Kinematic> p;
+    Particle<R, damping::PerFrame, position::ConstantAcceleration> p;
     p.set_position({R(10), R(20), R(30)});
     p.set_velocity({R(1), R(2), R(3)});
     p.set_acceleration({R(0), R(-10), R(0)});
@@ -211,14 +211,14 @@ TEST_CASE_TEMPLATE("values worked out by hand", R, float, double) {
 }
 
 TEST_CASE_TEMPLATE("constant-acceleration flight matches p0 + v0 t + a t^2 / 2", R, float, double) {
-  // Kinematic without damping is exact for constant acceleration; so is the exact pair.
+  // ConstantAcceleration without damping is exact for constant acceleration; so is the exact pair.
   const Vector3<R> p0{R(0), R(1.5), R(0)};
   const Vector3<R> v0{R(3), R(30), R(40)};
   const Vector3<R> a = gravity(earth_gravity<R>);
   constexpr int steps = 240;
   const R t = R(1) / R(60);
 
-  Particle<R, damping::None, position::Kinematic> kinematic;
+  Particle<R, damping::None, position::ConstantAcceleration> kinematic;
   Particle<R, damping::None, position::Exact> exact;
   kinematic.set_position(p0);
   kinematic.set_velocity(v0);

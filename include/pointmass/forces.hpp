@@ -11,7 +11,7 @@
 //                          bodies, t)
 //   forces/generators.hpp  Gravity, Drag, AnchoredSpring/Bungee, Spring/Bungee, Buoyancy,
 //                          LinkSprings/LinkBungees and apply_links
-//   forces/oscillator.hpp  damped_oscillator (closed form), StiffSpring (advance: exact step),
+//   forces/oscillator.hpp  damped_oscillator (closed form), StiffSpring (integrate: exact step),
 //                          PositionOnlyStiffSpring (Cyclone's force form)
 //   forces/registry.hpp    ForceRegistry (owning and non-owning registrations)
 //   detail/validate.hpp       the argument checks (shared with Particle and ParticleSystem)

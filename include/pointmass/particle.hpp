@@ -3,7 +3,7 @@
 //
 //   pointmass::Particle<float>                       the defaults: per-second damping,
 //                                                    position p + v t
-//   pointmass::Particle<double, damping::PerFrame, position::Kinematic>
+//   pointmass::Particle<double, damping::PerFrame, position::ConstantAcceleration>
 //   pointmass::BasicParticle<Quantities, D, P>       the same over any QuantitySet (units.hpp
 //                                                    uses it for SI quantities)
 //   pointmass::Particle<Precision<float, double>>    float arithmetic, double positions: far

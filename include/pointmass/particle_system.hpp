@@ -38,6 +38,7 @@
 #include "config.hpp"
 #include "damping.hpp"
 #include "detail/system_kernel.hpp"
+#include "detail/system_passes.hpp"
 #include "detail/system_state.hpp"
 #include "detail/validate.hpp"
 #include "features.hpp"
@@ -69,7 +70,7 @@ template <class S, DampingPolicy D = damping::PerSecond, class P = position::Eul
   requires((Real<S> || PrecisionChoice<S>) && (detail::is_feature_v<Features> && ...))
 class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D, P, Features...>> {
   // clang-format on
-  using State = detail::SystemState<S, D, P, Features...>;
+  using State = detail::SystemPasses<S, D, P, Features...>;
   using Facets = detail::SystemFacets<detail::SystemStateBase<S, D, P, Features...>>;
   using R = real_of_t<S>;
   using Layout = typename State::Layout;

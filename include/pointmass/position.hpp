@@ -5,18 +5,22 @@
 // the step, the resulting acceleration a, the step t and the damping policy's per-step
 // factors, and returns the new position:
 //
-//   policy        p1                              order*  when to choose
-//   Euler         p0 + v0 t                       1       the default, Millington's short form: cheapest
-//   Kinematic     p0 + v0 t + a t^2 / 2           1 (exact for constant a without damping)
-//                                                         short bursts of huge acceleration
-//   SemiImplicit  p0 + v1 t                       1       springs and orbits: symplectic Euler,
-//                                                         what most game engines use; does not gain
-//                                                         energy on an undamped spring for w t < 2
-//   Exact         the integral of v(t) over the step, for constant a and per-second damping
-//                                                 exact   projectiles with drag, with damping::Exact
+//   policy                p1                          order*  when to choose
+//   Euler                 p0 + v0 t                   1       the default, Millington's
+//                                                             short form: the cheapest
+//   ConstantAcceleration  p0 + v0 t + a t^2 / 2       1       short bursts of huge
+//                                                             acceleration (exact for constant
+//                                                             a without damping)
+//   SemiImplicit          p0 + v1 t                   1       springs and orbits: symplectic
+//                                                             Euler, what most game engines
+//                                                             use; does not gain energy on an
+//                                                             undamped spring for w t < 2
+//   Exact                 the integral of v(t) over   exact   projectiles with drag, with
+//                         the step, for constant a            damping::Exact
+//                         and per-second damping
 //
-//   * global order on the continuous model. The explicit forms (Euler, Kinematic) gain energy
-//     on an undamped spring at any step.
+//   * global order on the continuous model. The explicit forms (Euler, ConstantAcceleration)
+//     gain energy on an undamped spring at any step.
 //
 // Write your own as a type with one static function (see docs/design.md):
 //   static constexpr auto position(const auto& p0, const auto& v0, const auto& v1,
@@ -57,7 +61,7 @@ struct Euler {
 
 /// The full form: p1 = p0 + v0 t + a t^2 / 2. Exact for constant acceleration without
 /// damping; with damping the velocity update still limits the method to first order.
-struct Kinematic {
+struct ConstantAcceleration {
   /// Global order of accuracy against the continuous model.
   static constexpr int order = 1;
   /// True when, paired with damping policy D, a step is the exact flow for constant
@@ -73,6 +77,10 @@ struct Kinematic {
     return p0 + v0 * t + (a * t) * (t * R(0.5));
   }
 };
+/// The name of ConstantAcceleration in 0.1, kept one minor version: "kinematic" names a body
+/// that forces do not move in game engines, which this policy is not.
+using Kinematic [[deprecated("pointmass 0.2: use position::ConstantAcceleration")]] =
+    ConstantAcceleration;
 
 /// Semi-implicit (symplectic) Euler: p1 = p0 + v1 t, with the velocity from the end of the
 /// step. First order, but symplectic: on an undamped spring of angular frequency w it keeps
@@ -106,7 +114,7 @@ concept ExactFactors = std::is_empty_v<F> || requires(const F& f) {
 /// The exact position for constant acceleration a and per-second damping (rate k = ln d):
 ///   p(t) = p0 + v0 t phi1(kt) + a t^2 phi2(kt),   phi2(x) = (e^x - 1 - x) / x^2,
 /// with phi1 and phi2 from damping::Exact's factors (computed once per step). Without damping
-/// (damping::None, k = 0: phi1 = 1, phi2 = 1/2) it is the Kinematic form.
+/// (damping::None, k = 0: phi1 = 1, phi2 = 1/2) it is the ConstantAcceleration form.
 struct Exact {
   /// Global order of accuracy against the continuous model.
   static constexpr int order = 1;
@@ -119,9 +127,10 @@ struct Exact {
   POINTMASS_HD static constexpr P position(const P& p0, const V& v0, const V&, const A& a,
                                            const T& t, const F& factors) noexcept {
     if constexpr (std::is_empty_v<F>) {
-      return Kinematic::position(p0, v0, v0, a, t, factors);
+      return ConstantAcceleration::position(p0, v0, v0, a, t, factors);
     } else {
-      return p0 + v0 * (t * factors.phi1) + (a * t) * (t * factors.phi2);  // as Kinematic
+      // As ConstantAcceleration computes it, with phi1 and phi2 for 1 and 1/2.
+      return p0 + v0 * (t * factors.phi1) + (a * t) * (t * factors.phi2);
     }
   }
 };
@@ -131,7 +140,7 @@ struct Exact {
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// True when the pair (D, P) steps exactly along the continuous model for constant
-/// acceleration at any step length (its error is rounding only): (None, Kinematic),
+/// acceleration at any step length (its error is rounding only): (None, ConstantAcceleration),
 /// (None, Exact) and (Exact, Exact).
 /// (A policy that does not state its exactness is taken as not exact.)
 template <class D, class P>
@@ -172,7 +181,7 @@ constexpr bool check_policy_pair() {
     static_assert(fits,
                   "position::Exact works only with damping::Exact or damping::None; with "
                   "damping::PerSecond, PerFrame or AccelerateThenDamp choose position::Euler, "
-                  "Kinematic or SemiImplicit, which work with every damping policy");
+                  "ConstantAcceleration or SemiImplicit, which work with every damping policy");
   } else {
     static_assert(fits,
                   "this position policy does not fit this damping policy: it needs a static "

@@ -94,16 +94,16 @@ constexpr bool check_position_precision() {
   return true;
 }
 
-}  // namespace detail
-
 /// Arithmetic in R, positions stored as Position (see the file comment): what
-/// Precision<R, Position> names when Position is not R.
+/// Precision<R, Position> names when Position is not R (a user names only Precision).
 template <Real R, class Position>
 struct PositionsStoredAs {
-  static_assert(detail::check_position_precision<R, Position>());
+  static_assert(check_position_precision<R, Position>());
   using real = R;
   using position = Position;
 };
+
+}  // namespace detail
 
 /// The precision of a particle: arithmetic in R, positions stored as Position. Give it as the
 /// first template argument of Particle, ParticleSystem or units::Particle. Precision<R> (and
@@ -111,7 +111,7 @@ struct PositionsStoredAs {
 /// still lets generic code deduce R.
 template <Real R, class Position = R>
 using Precision =
-    std::conditional_t<std::is_same_v<R, Position>, R, PositionsStoredAs<R, Position>>;
+    std::conditional_t<std::is_same_v<R, Position>, R, detail::PositionsStoredAs<R, Position>>;
 
 namespace detail {
 

@@ -3,7 +3,7 @@
 // compile error, at no run-time cost. The one public header that needs Boost (headers only).
 //
 //   pointmass::units::Particle<double>                          SI quantities of double
-//   pointmass::units::Particle<float, damping::PerFrame, position::Kinematic>
+//   pointmass::units::Particle<float, damping::PerFrame, position::ConstantAcceleration>
 //   pointmass::units::Particle<Precision<float, double>>        float quantities, the position
 //                                                               a units::length<double>
 //

@@ -263,7 +263,7 @@ TEST_CASE_TEMPLATE("a constructor that rejects any argument leaves the generator
   for (const auto& stiff : {forces::StiffSpring<R>({nan, R(0), R(0)}, R(100), R(1)),
                             forces::StiffSpring<R>({}, R(100), R(-1))}) {
     Particle<R> moved = body;
-    stiff.advance(moved, R(0.5));
+    stiff.integrate(moved, R(0.5));
     CHECK(close(moved.position(), body.position() + body.velocity() * R(0.5), R(4)));
     CHECK(moved.velocity() == body.velocity());
   }

@@ -365,7 +365,7 @@ TEST_CASE_TEMPLATE("energy on an undamped spring: explicit forms gain, semi-impl
   const R e0 = R(0.5 * k);
   std::vector<R> e_euler, e_kinematic, e_exact, e_semi;
   integrated_x<R, position::Euler>(k, 0, dt, steps, &e_euler);
-  integrated_x<R, position::Kinematic>(k, 0, dt, steps, &e_kinematic);
+  integrated_x<R, position::ConstantAcceleration>(k, 0, dt, steps, &e_kinematic);
   integrated_x<R, position::Exact>(k, 0, dt, steps, &e_exact);
   integrated_x<R, position::SemiImplicit>(k, 0, dt, steps, &e_semi);
   // Explicit Euler multiplies the energy by 1 + (w dt)^2 every step: 1.011^600 = 750.

@@ -214,11 +214,11 @@ TEST_CASE_TEMPLATE("stiff springs: tiny steps, tiny inverse masses, huge stiffne
   Particle<R, pointmass::damping::None, pointmass::position::SemiImplicit> body;
   body.set_position(x);
   body.set_velocity(v);
-  sticky.advance(body, R(1));
+  sticky.integrate(body, R(1));
   CHECK(close(body.position(), x, R(4)));
   // Huge stiffness (w0 = 1e18 rad/s in float): finite, at the anchor's distance at most.
   const forces::StiffSpring<R> rigid({}, R(1e36), R(0));
-  rigid.advance(body, R(0.25));
+  rigid.integrate(body, R(0.25));
   CHECK(pointmass::is_finite(body.position()));
   CHECK(pointmass::magnitude(body.position()) <= R(1.0001));
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// StiffSpring::advance: the closed-form step. Alone, it is the closed form at any step (period,
+// StiffSpring::integrate: the closed-form step. Alone, it is the closed form at any step (period,
 // amplitude and every sample against damped_oscillator and Boost.Odeint, at steps from 1e-4 s
 // to far beyond the explicit stability limit w0 t = 2); with gravity it is odeint's trajectory
 // at every step and stays stable. The force form it replaces (PositionOnlyStiffSpring) is pinned as
@@ -41,7 +41,7 @@ struct Trajectory {
 };
 
 /// x(n dt), v(n dt) for n = 0 .. steps, of a 1 kg body released at x = 1 on the spring,
-/// stepped by `advance` (or, with `position_only`, by the force form and integrate).
+/// stepped by `integrate` (or, with `position_only`, by the force form and integrate).
 template <class R>
 Trajectory stepped(double friction, double dt, long steps, Vector3<R> gravity = {},
                    bool position_only = false) {
@@ -56,7 +56,7 @@ Trajectory stepped(double friction, double dt, long steps, Vector3<R> gravity = 
       forces::update_force(force_form, body, R(dt));
       body.integrate(R(dt));
     } else {
-      spring.advance(body, R(dt));
+      spring.integrate(body, R(dt));
     }
     out.x.push_back(double(body.position().x));
     out.v.push_back(double(body.velocity().x));
@@ -78,8 +78,8 @@ double period_of(const std::vector<double>& xs, double dt) {
 
 }  // namespace
 
-TEST_CASE_TEMPLATE("stiff spring advance: the closed form's period and amplitude at every step", R,
-                   float, double) {
+TEST_CASE_TEMPLATE("stiff spring integrate: the closed form's period and amplitude at every step",
+                   R, float, double) {
   // Undamped, w0 = 2 pi: period 1 s, amplitude 1. Before the fix (a force landing on the
   // closed form's position only) the period was 1.414 s at each of these steps.
   for (const double dt : {1e-2, 1e-3, 1e-4}) {
@@ -93,7 +93,7 @@ TEST_CASE_TEMPLATE("stiff spring advance: the closed form's period and amplitude
 }
 
 TEST_CASE_TEMPLATE(
-    "stiff spring advance: every sample is the closed form's and odeint's, far "
+    "stiff spring integrate: every sample is the closed form's and odeint's, far "
     "beyond the explicit stability limit",
     R, float, double) {
   // w0 dt from 0.063 to 10.7 (explicit integration of the same spring is stable below 2),
@@ -130,7 +130,7 @@ TEST_CASE_TEMPLATE(
 }
 
 TEST_CASE_TEMPLATE(
-    "stiff spring advance with gravity: odeint's trajectory at every step, and "
+    "stiff spring integrate with gravity: odeint's trajectory at every step, and "
     "stable at any step",
     R, float, double) {
   // The spring and a constant gravity: x'' = -w0^2 x - c x' + g. Exact for constant a at
@@ -164,7 +164,7 @@ TEST_CASE_TEMPLATE(
 }
 
 TEST_CASE_TEMPLATE(
-    "stiff spring advance: like integrate for immovable bodies, zero and bad "
+    "stiff spring integrate: like integrate for immovable bodies, zero and bad "
     "steps",
     R, float, double) {
   const forces::StiffSpring<R> spring({}, R(100), R(1));
@@ -172,28 +172,28 @@ TEST_CASE_TEMPLATE(
   wall.set_position({R(1), R(0), R(0)});
   wall.set_inverse_mass(R(0));
   wall.add_force({R(5), R(0), R(0)});
-  spring.advance(wall, R(0.1));
+  spring.integrate(wall, R(0.1));
   CHECK(wall.position() == Vector3<R>{R(1), R(0), R(0)});
   CHECK(wall.force_accumulator() == Vector3<R>{});
   // A zero step changes nothing on an immovable body either: integrate(0) keeps its forces.
   Body<R> still_wall = wall, integrated_wall = wall;
   still_wall.add_force({R(5), R(0), R(0)});
   integrated_wall.add_force({R(5), R(0), R(0)});
-  spring.advance(still_wall, R(0));
+  spring.integrate(still_wall, R(0));
   integrated_wall.integrate(R(0));
   CHECK(still_wall.force_accumulator() == Vector3<R>{R(5), R(0), R(0)});
   CHECK(still_wall.force_accumulator() == integrated_wall.force_accumulator());
   Body<R> body;
   body.set_position({R(1), R(0), R(0)});
   body.add_force({R(5), R(0), R(0)});
-  spring.advance(body, R(0));  // nothing; the force waits for the next step
+  spring.integrate(body, R(0));  // nothing; the force waits for the next step
   CHECK(body.position() == Vector3<R>{R(1), R(0), R(0)});
   CHECK(body.force_accumulator() == Vector3<R>{R(5), R(0), R(0)});
   bool threw = false;
   try {
-    spring.advance(body, R(-1));
+    spring.integrate(body, R(-1));
   } catch (const std::invalid_argument& error) {
-    threw = std::string(error.what()).find("StiffSpring::advance: argument 'duration' = -1") !=
+    threw = std::string(error.what()).find("StiffSpring::integrate: argument 'duration' = -1") !=
             std::string::npos;
   }
   CHECK(threw);
@@ -201,14 +201,14 @@ TEST_CASE_TEMPLATE(
 }
 
 TEST_CASE_TEMPLATE(
-    "stiff spring advance: a state beyond the range is reported, naming the "
+    "stiff spring integrate: a state beyond the range is reported, naming the "
     "part that left it, and nothing changes",
     R, float, double) {
   const R max = std::numeric_limits<R>::max();
-  // The message of the std::invalid_argument that advance throws ("" if none).
+  // The message of the std::invalid_argument that integrate throws ("" if none).
   const auto report = [](const forces::StiffSpring<R>& spring, Body<R>& body, R duration) {
     try {
-      spring.advance(body, duration);
+      spring.integrate(body, duration);
     } catch (const std::invalid_argument& error) {
       return std::string(error.what());
     }
@@ -221,7 +221,7 @@ TEST_CASE_TEMPLATE(
   fast.set_position({max / R(1000), R(0), R(0)});
   const std::string velocity_report = report(stiff, fast, R(1));
   INFO(velocity_report);
-  CHECK(velocity_report.find("StiffSpring::advance: argument 'velocity'") != std::string::npos);
+  CHECK(velocity_report.find("StiffSpring::integrate: argument 'velocity'") != std::string::npos);
   CHECK(fast.position() == Vector3<R>{max / R(1000), R(0), R(0)});
   CHECK(fast.velocity() == Vector3<R>{});
   // w0 = 1e-3 rad/s (k = 1e-6), moving at max / 2 for 2,000 s (w0 t = 2): the velocity stays
@@ -231,7 +231,7 @@ TEST_CASE_TEMPLATE(
   far.set_velocity({max / R(2), R(0), R(0)});
   const std::string position_report = report(weak, far, R(2000));
   INFO(position_report);
-  CHECK(position_report.find("StiffSpring::advance: argument 'position'") != std::string::npos);
+  CHECK(position_report.find("StiffSpring::integrate: argument 'position'") != std::string::npos);
   CHECK(far.position() == Vector3<R>{});
   CHECK(far.velocity() == Vector3<R>{max / R(2), R(0), R(0)});
 }

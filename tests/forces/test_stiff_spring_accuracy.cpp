@@ -6,7 +6,7 @@
 //     of w0 t and gamma t;
 //   * PositionOnlyStiffSpring's force, m [ (x(t) - x0) / t - v0 ] / t, within a few epsilons
 //     of its scale, where the difference quotient lost every digit (a force of 0);
-//   * StiffSpring::advance under gravity with strong damping: the exact trajectory, the
+//   * StiffSpring::integrate under gravity with strong damping: the exact trajectory, the
 //     terminal velocity included (a half-kick splitting left a t / 2 instead).
 #include <doctest/doctest.h>
 
@@ -167,7 +167,7 @@ TEST_CASE_TEMPLATE(
 }
 
 TEST_CASE_TEMPLATE(
-    "stiff spring advance under gravity with strong damping: the exact trajectory, "
+    "stiff spring integrate under gravity with strong damping: the exact trajectory, "
     "terminal velocity included",
     R, float, double) {
   // m x'' = -k x - c x' + m g: with c t / m large and w0 t small the velocity is the terminal
@@ -184,7 +184,7 @@ TEST_CASE_TEMPLATE(
     body.set_position({R(1), R(0), R(0)});
     body.set_acceleration({g, R(0), R(0)});
     const forces::StiffSpring<R> spring({}, R(e.k), R(e.c));
-    for (int n = 0; n < e.steps; ++n) spring.advance(body, R(e.dt));
+    for (int n = 0; n < e.steps; ++n) spring.integrate(body, R(e.dt));
     // The closed form at n t: the released body's x0 phi plus g Q (the push's response).
     const R w0_squared = R(e.k);  // mass 1
     const R gamma = R(e.c) / R(2);

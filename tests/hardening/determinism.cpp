@@ -104,20 +104,20 @@ void run_all(const char* precision, int steps, Digest& overall) {
   std::snprintf(name, sizeof name, "%s %s %s", precision, #D, #P); \
   run<R, damping::D, position::P>(name, steps, overall)
   POINTMASS_RUN(None, Euler);
-  POINTMASS_RUN(None, Kinematic);
+  POINTMASS_RUN(None, ConstantAcceleration);
   POINTMASS_RUN(None, SemiImplicit);
   POINTMASS_RUN(None, Exact);
   POINTMASS_RUN(PerFrame, Euler);
-  POINTMASS_RUN(PerFrame, Kinematic);
+  POINTMASS_RUN(PerFrame, ConstantAcceleration);
   POINTMASS_RUN(PerFrame, SemiImplicit);
   POINTMASS_RUN(PerSecond, Euler);
-  POINTMASS_RUN(PerSecond, Kinematic);
+  POINTMASS_RUN(PerSecond, ConstantAcceleration);
   POINTMASS_RUN(PerSecond, SemiImplicit);
   POINTMASS_RUN(AccelerateThenDamp, Euler);
-  POINTMASS_RUN(AccelerateThenDamp, Kinematic);
+  POINTMASS_RUN(AccelerateThenDamp, ConstantAcceleration);
   POINTMASS_RUN(AccelerateThenDamp, SemiImplicit);
   POINTMASS_RUN(Exact, Euler);
-  POINTMASS_RUN(Exact, Kinematic);
+  POINTMASS_RUN(Exact, ConstantAcceleration);
   POINTMASS_RUN(Exact, SemiImplicit);
   POINTMASS_RUN(Exact, Exact);
 #undef POINTMASS_RUN

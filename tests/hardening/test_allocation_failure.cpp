@@ -154,7 +154,7 @@ TEST_CASE("a step allocates nothing: expiry, callbacks, handles and interpolatio
   using Game = pm::ParticleSystem<double, pm::damping::PerSecond, pm::position::Euler, f::Lifetime,
                                   f::Interpolation, f::Handles, f::Column<int, float>>;
   using Wide = pm::ParticleSystem<pm::Precision<float, double>, pm::damping::PerSecond,
-                                  pm::position::Kinematic, f::Lifetime>;
+                                  pm::position::ConstantAcceleration, f::Lifetime>;
   // Sizes on both sides of the alternating walk's lower bound (32 KiB of arrays).
   for (const std::size_t count : {std::size_t{100}, std::size_t{3000}}) {
     CAPTURE(count);

@@ -47,11 +47,11 @@ constexpr Vector3<R> launch{R(8), R(16), R(-2)};
 template <class R>
 constexpr Vector3<R> gravity{R(0), R(-16.5), R(0)};  // -16 once the 0.5 up is added
 
-// None + Kinematic is exact for constant acceleration: after 64 steps of 1/64 s (T = 1 s),
+// None + ConstantAcceleration is exact for constant acceleration: after 64 steps of 1/64 s (T = 1 s),
 // p = p0 + v0 T + a T^2 / 2 and v = v0 + a T, exactly.
 template <class R>
 constexpr bool kinematic_is_exact() {
-  const auto p = shot<R, damping::None, position::Kinematic>(origin<R>, launch<R>, gravity<R>, R(1),
+  const auto p = shot<R, damping::None, position::ConstantAcceleration>(origin<R>, launch<R>, gravity<R>, R(1),
                                                              R(1) / R(64), 64);
   return p.position() == Vector3<R>{R(8), R(4 + 16 - 8), R(-2)} &&
          p.velocity() == Vector3<R>{R(8), R(16 - 16), R(-2)};
@@ -96,7 +96,7 @@ static_assert(per_frame_is_geometric<double>());
 // An immovable particle (mass set to infinity) does not move, at compile time too.
 template <class R>
 constexpr bool immovable_stays() {
-  Particle<R, damping::PerFrame, position::Kinematic> p;
+  Particle<R, damping::PerFrame, position::ConstantAcceleration> p;
   p.set_position(origin<R>);
   p.set_velocity(launch<R>);
   p.set_mass(std::numeric_limits<R>::infinity());
@@ -130,7 +130,7 @@ constexpr bool default_damping_steps_as_none() {
   }
   return damped.position() == undamped.position() && damped.velocity() == undamped.velocity();
 }
-static_assert(default_damping_steps_as_none<float, damping::PerSecond, position::Kinematic>());
+static_assert(default_damping_steps_as_none<float, damping::PerSecond, position::ConstantAcceleration>());
 static_assert(default_damping_steps_as_none<double, damping::PerSecond, position::Euler>());
 static_assert(default_damping_steps_as_none<float, damping::PerSecond, position::SemiImplicit>());
 static_assert(default_damping_steps_as_none<float, damping::Exact, position::Exact>());
@@ -149,7 +149,7 @@ constexpr Vector3<R> velocity_after_one_step(R damping, R t) {
 }
 static_assert(velocity_after_one_step<float, damping::PerSecond, position::Euler>(0.25f, 0.5f) ==
               Vector3<float>{4.0f, 2.0f, 1.0f});
-static_assert(velocity_after_one_step<double, damping::PerSecond, position::Kinematic>(0.25, 0.5) ==
+static_assert(velocity_after_one_step<double, damping::PerSecond, position::ConstantAcceleration>(0.25, 0.5) ==
               Vector3<double>{4.0, 2.0, 1.0});
 static_assert(velocity_after_one_step<double, damping::PerSecond, position::Euler>(0.5, 2.0) ==
               Vector3<double>{2.0, 1.0, 0.5});
@@ -204,15 +204,15 @@ TEST_CASE_TEMPLATE(
 TEST_CASE_TEMPLATE("a trajectory computed at compile time equals the run-time one, bit for bit", R,
                    float, double) {
   check_compile_time_equals_run_time<R, damping::None, position::Euler>();
-  check_compile_time_equals_run_time<R, damping::None, position::Kinematic>();
+  check_compile_time_equals_run_time<R, damping::None, position::ConstantAcceleration>();
   check_compile_time_equals_run_time<R, damping::None, position::SemiImplicit>();
   check_compile_time_equals_run_time<R, damping::None, position::Exact>();
   check_compile_time_equals_run_time<R, damping::PerFrame, position::Euler>();
-  check_compile_time_equals_run_time<R, damping::PerFrame, position::Kinematic>();
+  check_compile_time_equals_run_time<R, damping::PerFrame, position::ConstantAcceleration>();
   check_compile_time_equals_run_time<R, damping::PerFrame, position::SemiImplicit>();
   // The damping value 0.97 is set in the constant expression too: its logarithm as well.
   check_compile_time_equals_run_time<R, damping::PerSecond, position::Euler>();
-  check_compile_time_equals_run_time<R, damping::PerSecond, position::Kinematic>();
+  check_compile_time_equals_run_time<R, damping::PerSecond, position::ConstantAcceleration>();
   check_compile_time_equals_run_time<R, damping::PerSecond, position::SemiImplicit>();
   check_compile_time_equals_run_time<R, damping::Exact, position::Exact>();
 }

@@ -16,7 +16,7 @@ using test::Space;
 
 namespace {
 
-using Featured = ParticleSystem<double, damping::PerSecond, position::Kinematic,
+using Featured = ParticleSystem<double, damping::PerSecond, position::ConstantAcceleration,
                                 features::PerParticleDamping, features::PerParticleAcceleration,
                                 features::ForceAccumulator, features::Lifetime>;
 using Sparks = ParticleSystem<float, damping::PerSecond, position::Euler, features::Lifetime>;

@@ -12,9 +12,9 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "AccelerateThenDamp damping, Kinematic position: Kokkos equals ParticleSystem::step, bit for "
+    "AccelerateThenDamp damping, ConstantAcceleration position: Kokkos equals ParticleSystem::step, bit for "
     "bit") {
-  test::check_pair<damping::AccelerateThenDamp, position::Kinematic>();
+  test::check_pair<damping::AccelerateThenDamp, position::ConstantAcceleration>();
 }
 
 TEST_CASE(

@@ -10,8 +10,8 @@ TEST_CASE("Exact damping, Euler position: Kokkos equals ParticleSystem::step, bi
   test::check_pair<damping::Exact, position::Euler>();
 }
 
-TEST_CASE("Exact damping, Kinematic position: Kokkos equals ParticleSystem::step, bit for bit") {
-  test::check_pair<damping::Exact, position::Kinematic>();
+TEST_CASE("Exact damping, ConstantAcceleration position: Kokkos equals ParticleSystem::step, bit for bit") {
+  test::check_pair<damping::Exact, position::ConstantAcceleration>();
 }
 
 TEST_CASE("Exact damping, SemiImplicit position: Kokkos equals ParticleSystem::step, bit for bit") {

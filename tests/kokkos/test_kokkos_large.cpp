@@ -8,7 +8,7 @@ using namespace pointmass;
 
 TEST_CASE_TEMPLATE(
     "1,000,000 particles: Kokkos equals ParticleSystem::step, bit for bit", System,
-    ParticleSystem<float, damping::PerSecond, position::Kinematic, features::Lifetime>,
+    ParticleSystem<float, damping::PerSecond, position::ConstantAcceleration, features::Lifetime>,
     ParticleSystem<double, damping::Exact, position::Exact, features::PerParticleDamping,
                    features::PerParticleAcceleration, features::ForceAccumulator,
                    features::Lifetime>) {

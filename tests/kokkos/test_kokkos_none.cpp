@@ -10,8 +10,8 @@ TEST_CASE("None damping, Euler position: Kokkos equals ParticleSystem::step, bit
   test::check_pair<damping::None, position::Euler>();
 }
 
-TEST_CASE("None damping, Kinematic position: Kokkos equals ParticleSystem::step, bit for bit") {
-  test::check_pair<damping::None, position::Kinematic>();
+TEST_CASE("None damping, ConstantAcceleration position: Kokkos equals ParticleSystem::step, bit for bit") {
+  test::check_pair<damping::None, position::ConstantAcceleration>();
 }
 
 TEST_CASE("None damping, SemiImplicit position: Kokkos equals ParticleSystem::step, bit for bit") {

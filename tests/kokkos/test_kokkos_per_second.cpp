@@ -11,8 +11,8 @@ TEST_CASE("PerSecond damping, Euler position: Kokkos equals ParticleSystem::step
 }
 
 TEST_CASE(
-    "PerSecond damping, Kinematic position: Kokkos equals ParticleSystem::step, bit for bit") {
-  test::check_pair<damping::PerSecond, position::Kinematic>();
+    "PerSecond damping, ConstantAcceleration position: Kokkos equals ParticleSystem::step, bit for bit") {
+  test::check_pair<damping::PerSecond, position::ConstantAcceleration>();
 }
 
 TEST_CASE(

@@ -38,7 +38,7 @@ double configurations() {
   using namespace pm;
   double sum = 0;
   sum += fly(Particle<float>{});
-  sum += fly(Particle<double, damping::PerFrame, position::Kinematic>{});
+  sum += fly(Particle<double, damping::PerFrame, position::ConstantAcceleration>{});
   sum += fly(Particle<double, damping::Exact, position::Exact>{});
   sum += fly(Particle<float, damping::AccelerateThenDamp, position::SemiImplicit>{});
   sum += fly(Particle<Precision<float, double>>{});
@@ -96,7 +96,7 @@ double configurations() {
 
 double with_units() {
   namespace si = boost::units::si;
-  pm::units::Particle<double, pm::damping::PerSecond, pm::position::Kinematic> shell;
+  pm::units::Particle<double, pm::damping::PerSecond, pm::position::ConstantAcceleration> shell;
   shell.set_velocity(pm::Vector3<double>{0, 10, 0} * si::meters_per_second);
   shell.set_mass(2.0 * si::kilograms);
   shell.integrate(0.5 * si::seconds);

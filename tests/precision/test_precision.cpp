@@ -180,7 +180,7 @@ Result fly(const Launch& launch) {
     // All-float rounds the position at each addition that involves p0 (two for the forms
     // with an a t^2 term): half an ulp each, per component.
     const int additions =
-        std::is_same_v<P, pm::position::Kinematic> || std::is_same_v<P, pm::position::Exact> ? 2
+        std::is_same_v<P, pm::position::ConstantAcceleration> || std::is_same_v<P, pm::position::Exact> ? 2
                                                                                              : 1;
     result.float_rounding += std::sqrt(3.0) * additions * float_ulp(largest(p_plain)) / 2;
     // The variant's own: double rounds p0 + d (half a double ulp); the pair rounds d + lo
@@ -241,7 +241,7 @@ TEST_CASE_TEMPLATE("far from the origin: within 1 mm of the exact sum of the flo
   namespace p = pm::position;
   SUBCASE("free flight from 1e6 m, no drag") { check_far<S, d::None, p::Euler>(free_flight(1e6)); }
   SUBCASE("free flight from 1e8 m, no drag") {
-    check_far<S, d::None, p::Kinematic>(free_flight(1e8));
+    check_far<S, d::None, p::ConstantAcceleration>(free_flight(1e8));
   }
   SUBCASE("artillery from 1e6 m, per-second drag (Exact, Exact)") {
     check_far<S, d::Exact, p::Exact>(artillery(1e6));
@@ -249,8 +249,8 @@ TEST_CASE_TEMPLATE("far from the origin: within 1 mm of the exact sum of the flo
   SUBCASE("artillery from 1e8 m, per-second drag (PerSecond, Euler)") {
     check_far<S, d::PerSecond, p::Euler>(artillery(1e8));
   }
-  SUBCASE("sparks from 1e6 m, per-frame drag (PerFrame, Kinematic)") {
-    check_far<S, d::PerFrame, p::Kinematic>(sparks(1e6));
+  SUBCASE("sparks from 1e6 m, per-frame drag (PerFrame, ConstantAcceleration)") {
+    check_far<S, d::PerFrame, p::ConstantAcceleration>(sparks(1e6));
   }
   SUBCASE("artillery from 1e6 m, the reference engine's drag (AccelerateThenDamp, SemiImplicit)") {
     check_far<S, d::AccelerateThenDamp, p::SemiImplicit>(artillery(1e6));
@@ -286,7 +286,7 @@ TEST_CASE_TEMPLATE("near the origin: never worse than all-float beyond its posit
   const Launch near_sparks{{0.5, 1.0, -0.25}, {3, 8, -2}, {0, -9.81f, 0}, 0.995f, 10'000};
   check_near.template operator()<d::Exact, p::Exact>(shot);
   check_near.template operator()<d::PerSecond, p::Euler>(shot);
-  check_near.template operator()<d::None, p::Kinematic>(shot);
+  check_near.template operator()<d::None, p::ConstantAcceleration>(shot);
   check_near.template operator()<d::PerFrame, p::SemiImplicit>(near_sparks);
 }
 
@@ -737,14 +737,14 @@ TEST_CASE("render-relative: an origin read from the buffer being written is the 
 
 TEST_CASE(
     "spawn(particle) copies a compensated position's error term: the system goes on bit for bit") {
-  pm::Particle<CompensatedPositions, pm::damping::PerSecond, pm::position::Kinematic> particle;
+  pm::Particle<CompensatedPositions, pm::damping::PerSecond, pm::position::ConstantAcceleration> particle;
   particle.set_position({3.0e6, -1.0e6, 5.0e5});
   particle.set_velocity({123.0f, 45.0f, -67.0f});
   particle.set_acceleration(pm::gravity<float>());
   particle.set_damping(0.8f);
   for (int k = 0; k < 1000; ++k) particle.integrate(1.0f / 60.0f);
   REQUIRE(particle.stored_position_error().x != 0.0f);  // lo carries something by now
-  pm::ParticleSystem<CompensatedPositions, pm::damping::PerSecond, pm::position::Kinematic> system(
+  pm::ParticleSystem<CompensatedPositions, pm::damping::PerSecond, pm::position::ConstantAcceleration> system(
       1);
   system.set_acceleration(pm::gravity<float>());
   system.set_damping(0.8f);

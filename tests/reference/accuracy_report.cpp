@@ -147,7 +147,7 @@ The largest omega h (omega the spring's angular frequency, h the frame time) for
 stays bounded: the largest energy of the run's second half is at most twice that of its first
 half (bisection to 1e-6). Semi-implicit Euler is stable up to omega h = 2 (theory: its step
 conserves v^2 + omega^2 x^2 - h omega^2 x v, bounded for omega h < 2). The explicit forms
-(Euler, Kinematic and Exact positions) gain energy at every step, by exactly 1 + (omega h)^2
+(Euler, ConstantAcceleration and Exact positions) gain energy at every step, by exactly 1 + (omega h)^2
 a step for Euler: the limit they show is only the step at which the growth becomes visible
 within the run, and it halves when the run is four times longer. With damping, a small
 enough step makes them stable.
@@ -217,13 +217,13 @@ time on the springs: there a float run twice as wrong as double fails.
   one step as well as many, for about the cost of one `expm1`. Every other combination is
   first order: its error halves when the frame rate doubles.
 * **No drag, constant acceleration (sparks, debris, gravity only)**: `damping::None` +
-  `position::Kinematic` (or `position::Exact`, the same there): exact, and the cheapest of the exact choices.
+  `position::ConstantAcceleration` (or `position::Exact`, the same there): exact, and the cheapest of the exact choices.
 * **The seed's defaults** (`PerSecond` + `Euler`): first order; at 60 fps the ballistic
   shots are off by centimetres to a metre after 5 s (tables above). Choose them to match the
   reference engine, not for accuracy.
 * **Forces that depend on the position (springs, orbits, anything that oscillates)**:
   `position::SemiImplicit`. It is stable for omega h < 2 and keeps the energy within a band
-  instead of pumping it; the explicit forms (Euler, Kinematic, Exact) gain energy at every
+  instead of pumping it; the explicit forms (Euler, ConstantAcceleration, Exact) gain energy at every
   step and blow up over long runs. No combination is better than first order on a spring:
   the force is held constant over each step.
 * **Per-frame damping** is only frame-rate independent if its value is set for the frame

@@ -142,7 +142,7 @@ TEST_CASE_TEMPLATE("total damping (d = 0) stops the particle where it is, withou
 
 TEST_CASE_TEMPLATE("no damping (d = 1) is the kinematic form exactly", R, float, double) {
   Particle<R, damping::Exact, position::Exact> exact;
-  Particle<R, damping::None, position::Kinematic> kinematic;
+  Particle<R, damping::None, position::ConstantAcceleration> kinematic;
   exact.set_damping(R(1));
   exact.set_velocity({R(3), R(20), R(4)});
   kinematic.set_velocity({R(3), R(20), R(4)});

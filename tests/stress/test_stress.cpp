@@ -111,7 +111,7 @@ TEST_CASE_TEMPLATE("damping 1 is no damping, bit for bit, damping 0 keeps only t
 TEST_CASE_TEMPLATE("tiny and huge masses under a force, infinite mass never moves", R, float,
                    double) {
   for (const R mass : {R(1e-6), R(1e9)}) {
-    Particle<R, damping::None, position::Kinematic> p;  // exact for a constant force
+    Particle<R, damping::None, position::ConstantAcceleration> p;  // exact for a constant force
     p.set_mass(mass);
     const Vector3<R> force{R(0), R(1), R(-2)};
     {
@@ -211,7 +211,7 @@ TEST_CASE(
       semi = stability_limit<damping::None, position::SemiImplicit>(s, 20000);
       euler_short = stability_limit<damping::None, position::Euler>(s, 20000);
       euler_long = stability_limit<damping::None, position::Euler>(s, 80000);
-      kinematic = stability_limit<damping::None, position::Kinematic>(s, 20000);
+      kinematic = stability_limit<damping::None, position::ConstantAcceleration>(s, 20000);
     }
     MESSAGE("limits in omega h: semi-implicit ", semi, ", explicit ", euler_short, " (2e4 steps) ",
             euler_long, " (8e4 steps), kinematic ", kinematic);

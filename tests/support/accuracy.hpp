@@ -119,7 +119,7 @@ constexpr const char* damping_name() {
 template <class P>
 constexpr const char* position_name() {
   if constexpr (std::is_same_v<P, position::Euler>) return "Euler";
-  else if constexpr (std::is_same_v<P, position::Kinematic>) return "Kinematic";
+  else if constexpr (std::is_same_v<P, position::ConstantAcceleration>) return "ConstantAcceleration";
   else if constexpr (std::is_same_v<P, position::SemiImplicit>) return "SemiImplicit";
   else return "Exact";
 }
@@ -168,7 +168,7 @@ template <class F>
 void for_each_combination(F&& f) {
   const auto with_damping = [&]<class D>() {
     f.template operator()<D, position::Euler>();
-    f.template operator()<D, position::Kinematic>();
+    f.template operator()<D, position::ConstantAcceleration>();
     f.template operator()<D, position::SemiImplicit>();
     if constexpr (std::is_same_v<D, damping::None> || std::is_same_v<D, damping::Exact>) {
       f.template operator()<D, position::Exact>();

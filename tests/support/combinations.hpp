@@ -22,7 +22,7 @@ struct Combination {
 
 template <class R, class D>
 using WithEveryPosition =
-    std::tuple<Combination<R, D, position::Euler>, Combination<R, D, position::Kinematic>,
+    std::tuple<Combination<R, D, position::Euler>, Combination<R, D, position::ConstantAcceleration>,
                Combination<R, D, position::SemiImplicit>>;
 
 template <class... Tuples>
@@ -65,7 +65,7 @@ OracleState oracle_step(const OracleState& s, const long double (&a)[3], long do
 
     long double p1 = 0;
     if constexpr (std::is_same_v<P, position::Euler>) p1 = s.p[i] + v0 * t;
-    else if constexpr (std::is_same_v<P, position::Kinematic>)
+    else if constexpr (std::is_same_v<P, position::ConstantAcceleration>)
       p1 = s.p[i] + v0 * t + a[i] * t * t / 2;
     else if constexpr (std::is_same_v<P, position::SemiImplicit>) p1 = s.p[i] + v1 * t;
     else if constexpr (std::is_same_v<P, position::Exact>) {

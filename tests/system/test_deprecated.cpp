@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include <pointmass/forces.hpp>
 #include <pointmass/particle_system.hpp>
 
 #include "system_support.hpp"
@@ -98,4 +99,18 @@ TEST_CASE("the loop of one's own of 0.1 steps as step does") {
   own.step(0.05f);
   stepped.step(0.05f);
   CHECK(same_bits(own.position(0), stepped.position(0)));
+}
+
+TEST_CASE("position::Kinematic and StiffSpring::advance of 0.1 are their new names") {
+  static_assert(std::is_same_v<position::Kinematic, position::ConstantAcceleration>);
+  Particle<double> by_integrate;
+  by_integrate.set_position({1.0, 0.0, 0.0});
+  by_integrate.set_velocity({0.0, 2.0, 0.0});
+  Particle<double> by_advance = by_integrate;
+  const forces::StiffSpring<double> spring({0.0, 0.0, 0.0}, 50.0, 0.5);
+  spring.integrate(by_integrate, 0.1);
+  spring.advance(by_advance, 0.1);
+  CHECK(same_bits(by_integrate.position(), by_advance.position()));
+  CHECK(same_bits(by_integrate.velocity(), by_advance.velocity()));
+  CHECK_FALSE(same_bits(by_integrate.position(), Vector3<double>{1.0, 0.0, 0.0}));
 }

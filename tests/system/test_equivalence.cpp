@@ -34,18 +34,18 @@ struct Config {
 
 template <class R>
 using AllPairs = std::tuple<
-    Config<R, damping::None, position::Euler>, Config<R, damping::None, position::Kinematic>,
+    Config<R, damping::None, position::Euler>, Config<R, damping::None, position::ConstantAcceleration>,
     Config<R, damping::None, position::SemiImplicit>, Config<R, damping::None, position::Exact>,
     Config<R, damping::PerFrame, position::Euler>,
-    Config<R, damping::PerFrame, position::Kinematic>,
+    Config<R, damping::PerFrame, position::ConstantAcceleration>,
     Config<R, damping::PerFrame, position::SemiImplicit>,
     Config<R, damping::PerSecond, position::Euler>,
-    Config<R, damping::PerSecond, position::Kinematic>,
+    Config<R, damping::PerSecond, position::ConstantAcceleration>,
     Config<R, damping::PerSecond, position::SemiImplicit>,
     Config<R, damping::AccelerateThenDamp, position::Euler>,
-    Config<R, damping::AccelerateThenDamp, position::Kinematic>,
+    Config<R, damping::AccelerateThenDamp, position::ConstantAcceleration>,
     Config<R, damping::AccelerateThenDamp, position::SemiImplicit>,
-    Config<R, damping::Exact, position::Euler>, Config<R, damping::Exact, position::Kinematic>,
+    Config<R, damping::Exact, position::Euler>, Config<R, damping::Exact, position::ConstantAcceleration>,
     Config<R, damping::Exact, position::SemiImplicit>, Config<R, damping::Exact, position::Exact>>;
 
 template <class... A, class... B>
@@ -262,7 +262,7 @@ TEST_CASE_TEMPLATE(
 }
 
 TEST_CASE_TEMPLATE("the step kernel over one index is the step", R, float, double) {
-  using System = ParticleSystem<R, damping::PerSecond, position::Kinematic,
+  using System = ParticleSystem<R, damping::PerSecond, position::ConstantAcceleration,
                                 features::PerParticleAcceleration, features::Lifetime>;
   std::mt19937 engine(3);
   System stepped(40);
@@ -295,7 +295,7 @@ TEST_CASE_TEMPLATE(
     "per-particle d^t kept across steps of one length: set_damping, spawn, kill, a new length, "
     "a copy and a loop of one's own all stay the Particles' bit for bit",
     S, ParticleSystem<float, damping::PerSecond, position::Euler, features::PerParticleDamping>,
-    ParticleSystem<double, damping::PerSecond, position::Kinematic, features::PerParticleDamping,
+    ParticleSystem<double, damping::PerSecond, position::ConstantAcceleration, features::PerParticleDamping,
                    features::ForceAccumulator>,
     ParticleSystem<float, damping::AccelerateThenDamp, position::Euler,
                    features::PerParticleDamping, features::PerParticleAcceleration>) {

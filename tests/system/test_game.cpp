@@ -424,8 +424,8 @@ TEST_CASE("expiry callback: each expiring particle once, in its final state, chi
 
 TEST_CASE_TEMPLATE("interpolation: alpha 0 is the previous position, 1 the current, bit for bit", R,
                    float, double) {
-  // Kinematic: its last addition (a t^2 / 2) leaves positions off the grid of the previous ones.
-  using Drawn = ParticleSystem<R, damping::PerSecond, position::Kinematic, features::Interpolation>;
+  // ConstantAcceleration: its last addition (a t^2 / 2) leaves positions off the grid of the previous ones.
+  using Drawn = ParticleSystem<R, damping::PerSecond, position::ConstantAcceleration, features::Interpolation>;
   std::mt19937 random(5);
   Drawn system;
   system.set_acceleration(gravity<R>());

@@ -76,7 +76,7 @@ TEST_CASE_TEMPLATE("scenes::launch starts a particle with wide positions, plain 
 template <class R, class D>
 void check_all_positions(R frame, int steps) {
   check_same_trajectories<R, D, pm::position::Euler>(frame, steps);
-  check_same_trajectories<R, D, pm::position::Kinematic>(frame, steps);
+  check_same_trajectories<R, D, pm::position::ConstantAcceleration>(frame, steps);
   check_same_trajectories<R, D, pm::position::SemiImplicit>(frame, steps);
   if constexpr (pm::PositionPolicyFor<pm::position::Exact, D>) {
     check_same_trajectories<R, D, pm::position::Exact>(frame, steps);
@@ -138,14 +138,14 @@ TEST_CASE_TEMPLATE("a duration converts to seconds for the damping's exponent", 
 TEST_CASE_TEMPLATE("the step's equations run on quantities and give the closed form", R, float,
                    double) {
   // advance() itself, instantiated on Vector3s of length, velocity and acceleration and a
-  // time quantity: without damping, Kinematic is p + v t + a t^2 / 2 exactly in real
+  // time quantity: without damping, ConstantAcceleration is p + v t + a t^2 / 2 exactly in real
   // arithmetic; the rounding of a handful of operations is all that may differ.
   Vector3<pm::units::length<R>> p = Vector3<R>{R(0), R(1.5), R(0)} * si::meters;
   Vector3<pm::units::velocity<R>> v = Vector3<R>{R(0), R(30), R(40)} * si::meters_per_second;
   const Vector3<pm::units::acceleration<R>> a =
       Vector3<R>{R(0), R(-20), R(0)} * si::meters_per_second_squared;
   const pm::units::time<R> t = R(0.5) * si::seconds;
-  pm::advance<pm::damping::None, pm::position::Kinematic>(p, v, a, t, pm::damping::None::Factors{});
+  pm::advance<pm::damping::None, pm::position::ConstantAcceleration>(p, v, a, t, pm::damping::None::Factors{});
   // By hand: y = 1.5 + 30 * 0.5 - 20 * 0.125 = 14, z = 40 * 0.5 = 20; vy = 30 - 10 = 20.
   POINTMASS_CHECK_CLOSE(numbers(p), (Vector3<R>{R(0), R(14), R(20)}), R(8));
   POINTMASS_CHECK_CLOSE(numbers(v), (Vector3<R>{R(0), R(20), R(40)}), R(8));

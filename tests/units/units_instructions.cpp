@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   using namespace pm::position;
   double sum = 0;
   switch (std::atoi(argv[2])) {
-    case 0: sum = variant<float, None, Kinematic>(argv[1]); break;
+    case 0: sum = variant<float, None, ConstantAcceleration>(argv[1]); break;
     case 1: sum = variant<float, PerSecond, Euler>(argv[1]); break;
     case 2: sum = variant<double, PerSecond, Euler>(argv[1]); break;
     case 3: sum = variant<double, pm::damping::Exact, pm::position::Exact>(argv[1]); break;

@@ -33,7 +33,7 @@ concept PlainBody = requires(B& b, const B& cb, const Vector3<R>& f) {
   b.add_force(f);
 };
 
-/// A particle whose step a closed form may take over (StiffSpring::advance): it also shows
+/// A particle whose step a closed form may take over (StiffSpring::integrate): it also shows
 /// its own acceleration and accumulated force, and takes a new position and velocity.
 template <class B, class R>
 concept SteppableBody = PlainBody<B, R> && requires(B& b, const B& cb, const Vector3<R>& x) {

@@ -208,7 +208,7 @@ class StiffSpringParameters {
   using real = R;
   constexpr StiffSpringParameters() noexcept = default;
   /// Every argument is checked (each rejected one is reported); one rejected leaves the
-  /// spring inert: anchor, stiffness and damping 0 (advance moves a body as without it).
+  /// spring inert: anchor, stiffness and damping 0 (integrate moves a body as without it).
   constexpr StiffSpringParameters(const Vector3<R>& anchor, R stiffness, R damping) {
     using pointmass::detail::check_finite;
     using pointmass::detail::check_non_negative;
@@ -259,7 +259,8 @@ class StiffSpringParameters {
 };
 
 /// A stiff damped spring from a body to a fixed anchor, stepped in closed form instead of
-/// integrated: call `advance(body, t)` in place of `body.integrate(t)`. For a body of mass m,
+/// integrated by the body: call `spring.integrate(body, t)` in place of
+/// `body.integrate(t)`. For a body of mass m,
 /// x = p - anchor obeys m x'' = -k x - c x' + m a, where a is the body's own acceleration plus
 /// its accumulated forces over m, held constant over the step. With w0^2 = k / m:
 ///   * w0 t >= 1 (the spring is stiff for this step): exact for constant a. The body
@@ -282,8 +283,8 @@ class StiffSpring : public StiffSpringParameters<R> {
   using StiffSpringParameters<R>::StiffSpringParameters;
 
   template <SteppableBody<R> B>
-  constexpr void advance(B& body, R duration) const {
-    if (!pointmass::detail::check_duration("StiffSpring::advance", duration)) return;
+  constexpr void integrate(B& body, R duration) const {
+    if (!pointmass::detail::check_duration("StiffSpring::integrate", duration)) return;
     if (duration == R(0)) return;  // before the immovable case: integrate(0) keeps the forces
     const R inverse_mass = body.inverse_mass();
     if (!(inverse_mass > R(0))) {
@@ -307,15 +308,22 @@ class StiffSpring : public StiffSpringParameters<R> {
       s.position += a * (push.q * duration * duration);
       s.velocity += a * (push.psi_over_t * duration);
     }
-    if (!pointmass::detail::check_state("StiffSpring::advance", s.position, s.velocity)) return;
+    if (!pointmass::detail::check_state("StiffSpring::integrate", s.position, s.velocity)) {
+      return;
+    }
     body.set_position(s.position);
     body.set_velocity(s.velocity);
     body.clear_accumulator();
   }
+  template <SteppableBody<R> B>
+  [[deprecated("pointmass 0.2: use StiffSpring::integrate")]] constexpr void advance(
+      B& body, R duration) const {
+    integrate(body, duration);
+  }
 };
 
 /// Cyclone's "fake" stiff spring as a force, kept for compatibility; prefer
-/// StiffSpring::advance. What it does wrong: for a step t it adds the force that brings a body
+/// StiffSpring::integrate. What it does wrong: for a step t it adds the force that brings a body
 /// with position::SemiImplicit and damping::None to the closed form's position,
 ///   f = m [ (x(t) - x0) / t - v0 ] / t,
 /// so every step ends at the closed form's position from the body's current state, but the

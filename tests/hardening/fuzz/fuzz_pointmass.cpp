@@ -1453,7 +1453,7 @@ void fuzz_system(Input& in) {
 // and argument, and changes nothing), then bodies with any finite state and inverse mass and
 // any duration through every generator. Invariants: a force from finite input is finite, or
 // forces::update_force reports it and adds nothing; inside the physical box below, it is
-// finite; StiffSpring::advance sets a finite state or reports and changes nothing;
+// finite; StiffSpring::integrate sets a finite state or reports and changes nothing;
 // apply_links with any links either adds every force or, rejected, changes nothing.
 
 /// Inside this box (each magnitude 0 or in [1/box, box]) every generator's force and every
@@ -1694,16 +1694,16 @@ void fuzz_bodies(Input& in, const Generators<R>& g) {
       "PositionOnlyStiffSpring");
   // The closed-form step: a finite state, or reported and nothing changed.
   Body stepped = body;
-  g.stiff.advance(stepped, duration);
+  g.stiff.integrate(stepped, duration);
   if (report.calls == 0) {
     require(finite(stepped.position()) && finite(stepped.velocity()),
-            "StiffSpring::advance stored a non-finite state");
+            "StiffSpring::integrate stored a non-finite state");
   } else {
     require(!box(g.stiff.anchor(), g.stiff.stiffness(), g.stiff.damping(), body.acceleration()),
-            "StiffSpring::advance reported a state inside the physical box");
-    require(report.calls == 1 && report.function == "StiffSpring::advance",
-            "StiffSpring::advance reported wrongly:", report.message.c_str());
-    require(same_state(stepped, body), "a rejected advance changed the body");
+            "StiffSpring::integrate reported a state inside the physical box");
+    require(report.calls == 1 && report.function == "StiffSpring::integrate",
+            "StiffSpring::integrate reported wrongly:", report.message.c_str());
+    require(same_state(stepped, body), "a rejected integrate changed the body");
     report = {};
   }
 }
@@ -1760,20 +1760,20 @@ struct SystemConfig {
 template <class R>
 using ParticleConfigs =
     std::tuple<ParticleConfig<R, damping::None, position::Euler>,
-               ParticleConfig<R, damping::None, position::Kinematic>,
+               ParticleConfig<R, damping::None, position::ConstantAcceleration>,
                ParticleConfig<R, damping::None, position::SemiImplicit>,
                ParticleConfig<R, damping::None, position::Exact>,
                ParticleConfig<R, damping::PerFrame, position::Euler>,
-               ParticleConfig<R, damping::PerFrame, position::Kinematic>,
+               ParticleConfig<R, damping::PerFrame, position::ConstantAcceleration>,
                ParticleConfig<R, damping::PerFrame, position::SemiImplicit>,
                ParticleConfig<R, damping::PerSecond, position::Euler>,
-               ParticleConfig<R, damping::PerSecond, position::Kinematic>,
+               ParticleConfig<R, damping::PerSecond, position::ConstantAcceleration>,
                ParticleConfig<R, damping::PerSecond, position::SemiImplicit>,
                ParticleConfig<R, damping::AccelerateThenDamp, position::Euler>,
-               ParticleConfig<R, damping::AccelerateThenDamp, position::Kinematic>,
+               ParticleConfig<R, damping::AccelerateThenDamp, position::ConstantAcceleration>,
                ParticleConfig<R, damping::AccelerateThenDamp, position::SemiImplicit>,
                ParticleConfig<R, damping::Exact, position::Euler>,
-               ParticleConfig<R, damping::Exact, position::Kinematic>,
+               ParticleConfig<R, damping::Exact, position::ConstantAcceleration>,
                ParticleConfig<R, damping::Exact, position::SemiImplicit>,
                ParticleConfig<R, damping::Exact, position::Exact>>;
 
@@ -1784,7 +1784,7 @@ using SystemConfigs = std::tuple<
         ParticleSystem<R, damping::None, position::Exact, features::PerParticleAcceleration>>,
     SystemConfig<
         ParticleSystem<R, damping::PerFrame, position::SemiImplicit, features::ForceAccumulator>>,
-    SystemConfig<ParticleSystem<R, damping::AccelerateThenDamp, position::Kinematic,
+    SystemConfig<ParticleSystem<R, damping::AccelerateThenDamp, position::ConstantAcceleration,
                                 features::PerParticleDamping, features::Lifetime>>,
     SystemConfig<ParticleSystem<R, damping::Exact, position::Exact, features::PerParticleDamping,
                                 features::PerParticleAcceleration, features::ForceAccumulator,
@@ -1800,8 +1800,9 @@ using MoreSystemConfigs = std::tuple<
                                 features::ForceAccumulator>>,
     SystemConfig<ParticleSystem<R, damping::Exact, position::SemiImplicit,
                                 features::PerParticleAcceleration, features::Lifetime>>,
-    SystemConfig<ParticleSystem<R, damping::PerSecond, position::Kinematic, features::Lifetime,
-                                features::PerParticleDamping, features::PerParticleAcceleration>>,
+    SystemConfig<
+        ParticleSystem<R, damping::PerSecond, position::ConstantAcceleration, features::Lifetime,
+                       features::PerParticleDamping, features::PerParticleAcceleration>>,
     SystemConfig<ParticleSystem<R, damping::None, position::Euler, features::ForceAccumulator,
                                 features::Lifetime>>>;
 
@@ -1837,9 +1838,9 @@ using WideConfigs = std::tuple<
                        features::ForceAccumulator, features::Lifetime>>,
     SystemConfig<ParticleSystem<Precision<float, Compensated<float>>, damping::AccelerateThenDamp,
                                 position::SemiImplicit, features::ForceAccumulator>>,
-    SystemConfig<
-        ParticleSystem<Precision<double, Compensated<double>>, damping::PerFrame,
-                       position::Kinematic, features::PerParticleDamping, features::Lifetime>>,
+    SystemConfig<ParticleSystem<Precision<double, Compensated<double>>, damping::PerFrame,
+                                position::ConstantAcceleration, features::PerParticleDamping,
+                                features::Lifetime>>,
     SystemConfig<
         ParticleSystem<Precision<float, double>, damping::PerSecond, position::SemiImplicit,
                        features::Lifetime, features::Interpolation, features::Handles>>>;

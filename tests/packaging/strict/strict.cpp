@@ -41,7 +41,7 @@ R every_pair() {
   namespace damping = pm::damping;
   namespace position = pm::position;
   return run<R, damping::None, position::Euler>() + run<R, damping::None, position::Exact>() +
-         run<R, damping::PerFrame, position::Kinematic>() +
+         run<R, damping::PerFrame, position::ConstantAcceleration>() +
          run<R, damping::PerSecond, position::SemiImplicit>() +
          run<R, damping::AccelerateThenDamp, position::Euler>() +
          run<R, damping::Exact, position::Exact>();

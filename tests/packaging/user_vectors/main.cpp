@@ -77,12 +77,12 @@ void check_same_bits(const char* what, const A& a, const B& b) {
 
 int main() {
   // glm in: the particle fed glm vectors steps exactly as the one fed Vector3s.
-  pm::Particle<float, pm::damping::PerSecond, pm::position::Kinematic> with_glm;
+  pm::Particle<float, pm::damping::PerSecond, pm::position::ConstantAcceleration> with_glm;
   with_glm.set_position(glm::vec3(0.0f, 1.5f, 0.0f));
   with_glm.set_velocity(glm::vec3(0.0f, 30.0f, 40.0f));
   with_glm.set_acceleration(glm::vec3(0.0f, -20.0f, 0.0f));
   with_glm.add_force(glm::vec3(5.0f, 0.0f, 0.0f));
-  pm::Particle<float, pm::damping::PerSecond, pm::position::Kinematic> plain;
+  pm::Particle<float, pm::damping::PerSecond, pm::position::ConstantAcceleration> plain;
   plain.set_position({0.0f, 1.5f, 0.0f});
   plain.set_velocity({0.0f, 30.0f, 40.0f});
   plain.set_acceleration({0.0f, -20.0f, 0.0f});
