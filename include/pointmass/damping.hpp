@@ -71,7 +71,9 @@ class StoredDamping {
 };
 
 /// A damping value d in [0, 1] and its logarithm, stored when it is set so that a step needs
-/// no logarithm: the states of PerSecond and Exact.
+/// no logarithm: the states of PerSecond and Exact. ln d is split in two parts (a single
+/// rounded ln d would cost up to 7 ulp of d^t); d itself is kept because damping() must
+/// return exactly what was set, which e^(ln d) need not be.
 template <Real R>
 class LogDamping {
  public:

@@ -70,7 +70,13 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 namespace detail {
 // The facets, each over the one before it and the first over the state: one line of bases,
-// in which every facet is empty (a system is as big as its state).
+// in which every facet is empty (a system is as big as its state). One line rather than one
+// base per facet, so that no two empty bases share a type (an API probe compares sizeof with
+// the state's). A facet's member that needs a feature is constrained on the layout's trait
+// (`requires Base::Layout::has_handles`), never on the class being defined; names that
+// overload one another (column<C>() and column<Tag>()) stay in one facet, since a derived
+// class's member hides a base's. A new facet: a header under system/ with the same opening
+// comment, one more link here, and its line in this file's opening comment.
 template <class State>
 using SystemFacets = SystemHandOff<SystemInterpolation<
     SystemLifetime<SystemForceAccumulator<SystemHandles<SystemColumns<State>>>>>>;
