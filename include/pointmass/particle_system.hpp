@@ -453,10 +453,10 @@ class ParticleSystem
 
 namespace detail {
 /// What ParticleSystem::step does around its walk, for the steps of parallel.hpp and
-/// kokkos.hpp: before it, the uniform damping factors kept for the step length
-/// (keep_step_parameters; step_parameters() keeps none); after it, the damping_retention
-/// column's d^t kept as this duration's (finish_step(), which cannot know what a loop of the
-/// caller's did, forgets it). So the next step of the same length computes no exponential,
+/// kokkos.hpp: before it, the kept factors for the step length (keep_step_parameters;
+/// step_parameters() keeps none); after it, the damping_retention column recorded as this
+/// duration's retention (finish_step(), which cannot know what a loop of the caller's did,
+/// forgets it). So the next step of the same length computes no exponential,
 /// as after step.
 struct SystemAccess {
   template <class System, class R>

@@ -54,7 +54,8 @@ class SystemState {
   using damping_state = typename D::template State<R>;
   // True when a step keeps its uniform damping factors and length (-1 before the first step
   // and after set_damping), so that the next step of the same length computes no exponential,
-  // as a Particle does; with per-particle damping the damping_retention column keeps d^t.
+  // as a Particle does; with per-particle damping the damping_retention column holds each
+  // particle's retention instead.
   static constexpr bool keeps_factors = !Layout::per_particle_damping && keeps_factors_v<D, R>;
   using position_value = typename Storage::value;
   using user_columns = typename Layout::user_columns;
@@ -128,7 +129,8 @@ class SystemState {
   [[no_unique_address]] damping_state damping_{};
   Vector3<R> acceleration_{};
   [[no_unique_address]] Table handles_{};
-  // The step length the damping_retention column holds d^t for (features.hpp); -1: none.
+  // The step length the damping_retention column holds the retention for (features.hpp);
+  // -1: none.
   R retention_duration_ = R(-1);
   [[no_unique_address]] std::conditional_t<keeps_factors, KeptFactors<D, R>, NoKeptFactors> kept_{};
 
@@ -255,8 +257,8 @@ class SystemState {
     }
     if constexpr (Layout::per_particle_damping) store_damping(i, damping_state(particle.damping()));
   }
-  // Particle i's damping state, and its d^t for the kept step length (the same function
-  // and inputs as the step's refresh, so the same bits).
+  // Particle i's damping state, and its retention for retention_duration_ (the same
+  // function and inputs as the step's refresh, so the same bits).
   void store_damping(std::size_t i, const damping_state& state) noexcept {
     Layout::store_damping(arrays(), i, state);
     if constexpr (Layout::per_particle_retention) {
@@ -471,13 +473,13 @@ class SystemState {
     if (!check_not_stepping(function, "duration", removing_, duration)) return false;
     return !real_equal(duration, R(0)) && size() != 0;
   }
-  // The damping_retention column may no longer hold d^t for retention_duration_ (written
+  // The damping_retention column may no longer hold the retention for retention_duration_ (written
   // from outside, or stepped by a loop of the caller's): the next step recomputes it.
   void forget_retention() noexcept {
     if constexpr (Layout::per_particle_retention) retention_duration_ = R(-1);
   }
   // Every particle has just stepped through step_particle with step_parameters(duration):
-  // the damping_retention column holds d^t for this duration.
+  // the damping_retention column holds the retention for this duration.
   void record_retention(R duration) noexcept {
     if constexpr (Layout::per_particle_retention) retention_duration_ = duration;
   }
