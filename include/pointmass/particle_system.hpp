@@ -67,16 +67,17 @@
 #include "vector3.hpp"
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
+// The facets (detail::SystemFacets, below) stand in one line rather than one base each, so that
+// no two empty bases share a type (an API probe compares sizeof with the state's). A facet's
+// member that needs a feature is constrained on the layout's trait (`requires
+// Base::Layout::has_handles`), never on the class being defined; names that overload one
+// another (column<C>() and column<Tag>()) stay in one facet, since a derived class's member
+// hides a base's. A new facet: a header under system/ with the same opening comment, one more
+// link in the line, and its line in this file's opening comment.
 
 namespace detail {
 // The facets, each over the one before it and the first over the state: one line of bases,
-// in which every facet is empty (a system is as big as its state). One line rather than one
-// base per facet, so that no two empty bases share a type (an API probe compares sizeof with
-// the state's). A facet's member that needs a feature is constrained on the layout's trait
-// (`requires Base::Layout::has_handles`), never on the class being defined; names that
-// overload one another (column<C>() and column<Tag>()) stay in one facet, since a derived
-// class's member hides a base's. A new facet: a header under system/ with the same opening
-// comment, one more link here, and its line in this file's opening comment.
+// in which every facet is empty (a system is as big as its state).
 template <class State>
 using SystemFacets = SystemHandOff<SystemInterpolation<
     SystemLifetime<SystemForceAccumulator<SystemHandles<SystemColumns<State>>>>>>;
@@ -453,10 +454,10 @@ class ParticleSystem
 
 namespace detail {
 /// What ParticleSystem::step does around its walk, for the steps of parallel.hpp and
-/// kokkos.hpp: before it, the kept factors for the step length (keep_step_parameters;
-/// step_parameters() keeps none); after it, the damping_retention column recorded as this
-/// duration's retention (finish_step(), which cannot know what a loop of the caller's did,
-/// forgets it). So the next step of the same length computes no exponential,
+/// kokkos.hpp: before it, the uniform damping factors kept for the step length
+/// (keep_step_parameters; step_parameters() keeps none); after it, the damping_retention
+/// column's d^t kept as this duration's (finish_step(), which cannot know what a loop of the
+/// caller's did, forgets it). So the next step of the same length computes no exponential,
 /// as after step.
 struct SystemAccess {
   template <class System, class R>
