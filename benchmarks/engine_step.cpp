@@ -138,8 +138,8 @@ void BM_PerFrameParticles(benchmark::State& state) {
 
 // Its fields in the Particle's order (position, inverse mass, velocity, ...): no two of the
 // vectors a step writes are adjacent, so g++ does not vectorise the stores of a position and
-// the next velocity's first component together, which takes shuffles (docs/design.md). In
-// the textbook's order this loop would be the slower one in cache.
+// the next velocity's first component together, which takes shuffles (particle.hpp, at its
+// fields). In the textbook's order this loop would be the slower one in cache.
 template <class R>
 struct HandParticle {
   Vector3<R> position;

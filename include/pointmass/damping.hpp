@@ -71,7 +71,9 @@ class StoredDamping {
 };
 
 /// A damping value d in [0, 1] and its logarithm, stored when it is set so that a step needs
-/// no logarithm: the states of PerSecond and Exact.
+/// no logarithm: the states of PerSecond and Exact. ln d is split in two parts (a single
+/// rounded ln d would cost up to 7 ulp of d^t); d itself is kept because damping() must
+/// return exactly what was set, which e^(ln d) need not be.
 template <Real R>
 class LogDamping {
  public:
@@ -96,17 +98,17 @@ class LogDamping {
   detail::SplitLog<R> log_{};
 };
 
-/// The factor d^t a step keeps, for the per-second policies.
+/// The damping factors of PerFrame, PerSecond and AccelerateThenDamp: the retention alone.
 template <Real R>
 struct Retention {
-  R kept;  ///< fraction of the velocity kept over the step (d^t, or d per frame)
+  R kept;  ///< the retention: d^t (d for PerFrame), the fraction of velocity the step keeps
 };
 
 }  // namespace pointmass::damping
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
-/// What damping::PerFrame and damping::PerSecond share: one factor a step (Retention), applied to the velocity
-/// before the acceleration is added: v1 = v0 kept + a t.
+/// What damping::PerFrame and damping::PerSecond share: the retention (Retention) applied to
+/// the velocity before the acceleration is added: v1 = v0 * retention + a t.
 struct DampThenAccelerate {
   template <Real R>
   using Factors = damping::Retention<R>;
@@ -243,7 +245,7 @@ struct Exact {
 
   template <Real R>
   struct Factors {
-    R kept;  ///< e^x = d^t, the fraction of v0 kept over the step (x = k t)
+    R kept;  ///< the retention e^x = d^t (x = k t)
     R phi1;  ///< (e^x - 1) / x: 1 at x = 0, 0 at x = -infinity
     R phi2;  ///< (e^x - 1 - x) / x^2: 1/2 at x = 0, 0 at x = -infinity (for position::Exact)
   };

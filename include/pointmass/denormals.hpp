@@ -23,11 +23,14 @@
 //
 // Results change only where a value would have been subnormal: such a result, or operand,
 // is zero instead (a Particle and a ParticleSystem stepped under the same modes still agree
-// bit for bit). The modes belong to a thread: each worker of a thread pool of the caller's
-// needs a guard of its own. pointmass::step on a standard execution policy (parallel.hpp)
-// needs none: it runs every chunk under the modes of the thread that called it (and gives
-// each worker its own back after), so a guard around the call covers its workers, whatever
-// modes the pool's threads had. Supported with g++ and clang
+// bit for bit). The step never sets the modes itself: a step that switched them would make a
+// ParticleSystem and a Particle stepped by the same caller disagree wherever a value is
+// subnormal, and every bit-for-bit result (Cyclone's trajectories, the determinism digests)
+// would hold for normal numbers only. The modes belong to a thread: each worker of a thread
+// pool of the caller's needs a guard of its own. pointmass::step on a standard execution
+// policy (parallel.hpp) needs none: it runs every chunk under the modes of the thread that
+// called it (and gives each worker its own back after), so a guard around the call covers its
+// workers, whatever modes the pool's threads had. Supported with g++ and clang
 // on x86-64 and on 32-bit x86 with SSE (the MXCSR register's FTZ and DAZ bits), on 64-bit
 // ARM (the FPCR register's FZ bit, which flushes subnormal operands and results alike) and on
 // 32-bit ARM with a floating-point unit (the FPSCR's FZ bit, the same); elsewhere `supported`

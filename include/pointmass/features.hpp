@@ -97,7 +97,7 @@ enum class Column : unsigned char {
   damping,
   damping_log_hi,
   damping_log_lo,
-  damping_retention,  ///< d^t for the last step's length (PerSecond, AccelerateThenDamp)
+  damping_retention,  ///< the retention for the last step's length (PerSecond, AccelerateThenDamp)
   age,
   lifetime,
   previous_position_x,
@@ -285,10 +285,10 @@ struct SystemLayout {
       log_damping_state || std::is_same_v<damping_state, damping::StoredDamping<R>>;
   static constexpr bool per_particle_log_damping = per_particle_damping && log_damping_state;
   using damping_column_t = std::conditional_t<value_damping_state, R, damping_state>;
-  /// Per-particle PerSecond and AccelerateThenDamp damping also keep each particle's d^t for
-  /// the last step's length (`damping_retention`): a run of steps of one length (a fixed
-  /// step) computes no exponential and reads 4 bytes instead of d and ln d; a new length
-  /// refreshes the column first (ParticleSystem::step, StepParameters::refresh).
+  /// Per-particle PerSecond and AccelerateThenDamp damping also store each particle's
+  /// retention for the last step's length (`damping_retention`): a run of steps of one
+  /// length (a fixed step) computes no exponential and reads 4 bytes instead of d and ln d; a
+  /// new length refreshes the column first (ParticleSystem::step, StepParameters::refresh).
   static constexpr bool per_particle_retention =
       per_particle_damping &&
       (std::is_same_v<D, damping::PerSecond> || std::is_same_v<D, damping::AccelerateThenDamp>);
@@ -334,7 +334,7 @@ struct SystemLayout {
     }
   }
   /// True for the columns that hold parts of a damping state that must agree with each
-  /// other (d, ln d and the d^t kept for the last step length), and for the handle table's
+  /// other (d, ln d and the retention for the last step length), and for the handle table's
   /// slot of each particle, which the table itself indexes (a slot written through a span
   /// would have kill read and write outside the table): ParticleSystem::column gives them
   /// read-only (set_damping writes the damping columns together; spawn and kill the slots).

@@ -16,8 +16,9 @@
 //   forces/registry.hpp    ForceRegistry (owning and non-owning registrations)
 //   detail/validate.hpp       the argument checks (shared with Particle and ParticleSystem)
 //
-// Standard library only; must not include particle.hpp or particle_system.hpp (the generators
-// are written against the body concepts).
+// Owns: nothing but the list of forces headers (standard library only).
+// Must not include: particle.hpp or particle_system.hpp (the generators are written against
+// the body concepts).
 #pragma once
 
 #include "forces/apply.hpp"

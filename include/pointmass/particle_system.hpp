@@ -55,6 +55,13 @@
 #include "vector3.hpp"
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
+// The facets (detail::SystemFacets, below) stand in one line rather than one base each, so that
+// no two empty bases share a type (an API probe compares sizeof with the state's). A facet's
+// member that needs a feature is constrained on the layout's trait (`requires
+// Base::Layout::has_handles`), never on the class being defined; names that overload one
+// another (column<C>() and column<Tag>()) stay in one facet, since a derived class's member
+// hides a base's. A new facet: a header under system/ with the same opening comment, one more
+// link in the line, and its line in this file's opening comment.
 
 namespace detail {
 // The facets, each over the one before it and the first over the state: one line of private

@@ -37,6 +37,8 @@
 // buffer)` (ParticleSystem) compute it from the full stored position, exact wherever the true
 // offset is a float.
 //
+// Owns: Precision<R, Position>, Compensated<R>, and how such a position is stored, stepped
+// and read relative to an origin (detail::PositionStorage).
 // Must not include: anything but config.hpp and real.hpp (it is below the quantities).
 #pragma once
 

@@ -39,6 +39,9 @@
 // It relies on IEEE arithmetic rounding to nearest: not valid under -ffast-math (which may
 // reassociate the shifter trick away). Fused multiply-adds, where the compiler contracts,
 // only make the steps more accurate.
+//
+// Owns: the library's own exponential, logarithm of d and d^t, and the phi series.
+// Must not include: anything but config.hpp and real.hpp (the policies build on it).
 #pragma once
 
 #include <bit>

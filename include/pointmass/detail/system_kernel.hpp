@@ -61,7 +61,7 @@ class SystemKernel {
   static constexpr bool plain_positions =
       std::is_same_v<position_element, R> && !Layout::compensated_positions;
 
-  /// What every particle's step shares: the duration, the uniform damping factors (d^t, ...)
+  /// What every particle's step shares: the duration, the uniform damping factors
   /// and the uniform acceleration, where the configuration has them.
   struct StepParameters {
     R duration{};
@@ -69,8 +69,8 @@ class SystemKernel {
                                              damping_factors>
         factors{};
     Vector3<R> acceleration{};
-    /// With the damping_retention column (features.hpp): compute each particle's d^t for
-    /// this duration and keep it, before its step. True unless the system knows the column
+    /// With the damping_retention column (features.hpp): compute each particle's retention
+    /// for this duration into the column, before its step. True unless the system knows the column
     /// holds d^t for this duration already (ParticleSystem::step_parameters says), so a
     /// loop of one's own that builds its parameters itself is always right.
     bool refresh = true;
@@ -78,8 +78,8 @@ class SystemKernel {
 
   /// False when a step calls a power function per particle: per-particle damping with a
   /// policy of the user's. PerFrame needs no function, Exact the library's branch-free
-  /// exponential (detail/exponential.hpp), and PerSecond and AccelerateThenDamp read the d^t
-  /// kept for the step length (refreshed in a loop of its own: AccelerateThenDamp's powf does
+  /// exponential (detail/exponential.hpp), and PerSecond and AccelerateThenDamp read the
+  /// damping_retention column (refreshed in a loop of its own: AccelerateThenDamp's powf does
   /// not vectorise there). Only a vectorisable loop is marked for vectorisation.
   static constexpr bool vectorisable =
       !Layout::per_particle_damping || Layout::per_particle_retention ||
@@ -89,8 +89,10 @@ class SystemKernel {
 
   /// True when the step loop skips the select that keeps immovable particles in place, for
   /// segments whose particles are all movable (forces, positions stored as R, float or
-  /// double): a scene's particles usually all are (docs/design.md, "Movable particles step
-  /// without the select").
+  /// double): a scene's particles usually all are. The select is six a particle (position
+  /// and velocity, x, y, z), nearly as many instructions as the rest of the step; the test
+  /// costs one comparison. (The immovable particles cannot be counted as set_mass sets them
+  /// instead: the inverse mass column is the user's to write through column() and arrays().)
   static constexpr bool skips_movable_select =
       Layout::has_forces && plain_positions && !wider_than_double_v<R>;
 
@@ -143,7 +145,7 @@ class SystemKernel {
     step_kept(arrays, i, parameters);
   }
 
-  /// Particle i's d^t for a step of `duration`, kept in the damping_retention column.
+  /// Particle i's retention for a step of `duration`, written to the damping_retention column.
   POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void refresh_retention(
       const Arrays& arrays, std::size_t i, R duration) noexcept {
     if constexpr (Layout::per_particle_retention) {

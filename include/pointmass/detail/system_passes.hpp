@@ -166,13 +166,13 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
     if (!check_not_stepping(function, "duration", removing_, duration)) return false;
     return !real_equal(duration, R(0)) && size() != 0;
   }
-  // The damping_retention column may no longer hold d^t for retention_duration_ (written
-  // from outside, or stepped by a loop of the caller's): the next step recomputes it.
+  // The damping_retention column may no longer hold the retention for retention_duration_
+  // (written from outside, or stepped by a loop of the caller's): the next step recomputes it.
   void forget_retention() noexcept {
     if constexpr (Layout::per_particle_retention) retention_duration_ = R(-1);
   }
   // Every particle has just stepped through step_particle with step_parameters(duration):
-  // the damping_retention column holds d^t for this duration.
+  // the damping_retention column holds the retention for this duration.
   void record_retention(R duration) noexcept {
     if constexpr (Layout::per_particle_retention) retention_duration_ = duration;
   }

@@ -53,7 +53,8 @@ class SystemState {
   using damping_state = typename D::template State<R>;
   // True when a step keeps its uniform damping factors and length (-1 before the first step
   // and after set_damping), so that the next step of the same length computes no exponential,
-  // as a Particle does; with per-particle damping the damping_retention column keeps d^t.
+  // as a Particle does; with per-particle damping the damping_retention column holds each
+  // particle's retention instead.
   static constexpr bool keeps_factors = !Layout::per_particle_damping && keeps_factors_v<D, R>;
   using position_value = typename Storage::value;
   using user_columns = typename Layout::user_columns;
@@ -127,7 +128,8 @@ class SystemState {
   [[no_unique_address]] damping_state damping_{};
   Vector3<R> acceleration_{};
   [[no_unique_address]] Table handles_{};
-  // The step length the damping_retention column holds d^t for (features.hpp); -1: none.
+  // The step length the damping_retention column holds the retention for (features.hpp);
+  // -1: none.
   R retention_duration_ = R(-1);
   [[no_unique_address]] std::conditional_t<keeps_factors, KeptFactors<D, R>, NoKeptFactors> kept_{};
 
@@ -254,8 +256,8 @@ class SystemState {
     }
     if constexpr (Layout::per_particle_damping) store_damping(i, damping_state(particle.damping()));
   }
-  // Particle i's damping state, and its d^t for the kept step length (the same function
-  // and inputs as the step's refresh, so the same bits).
+  // Particle i's damping state, and its retention for retention_duration_ (the same
+  // function and inputs as the step's refresh, so the same bits).
   void store_damping(std::size_t i, const damping_state& state) noexcept {
     Layout::store_damping(arrays(), i, state);
     if constexpr (Layout::per_particle_retention) {

@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: BSL-1.0
 // pointmass/extras/scenes.hpp — ready-made scenes (not in the umbrella header: include it
-// explicitly): Cyclone's ballistic shots and a mass on a spring. The tests, examples and benchmarks all use these, so every accuracy and
-// speed figure the project reports is about the same work.
+// explicitly): Cyclone's ballistic shots and a mass on a spring. The tests, examples and
+// benchmarks all use these, so every accuracy and speed figure the project reports is about
+// the same work.
+//
+// Owns: the scenes' data (the shots, the spring, the frame times) and launching a particle
+// of any type with a shot.
+// Must not include: particle.hpp or anything above it (a scene is data, not a simulation).
 #pragma once
 
 #include <array>

@@ -144,6 +144,9 @@ struct SoaBodies {
 // compare positions with (a spring's anchor, the water's surface, the camera) and give those
 // in the same frame: a spring's anchor at 3 m from the origin is `{3, 0, 0}`. Velocities,
 // masses and forces are the particle's own; forces go to its accumulator as from any body.
+// A view rather than generators templated on the position type: every generator, apply,
+// apply_links and update_force work unchanged, no generator has a second kind of anchor, and
+// what they compute is a difference of nearby positions, which the offset keeps.
 
 /// A particle whose position is stored wider than its arithmetic: Particle<Precision<float,
 /// double>> or Particle<Precision<float, Compensated<float>>> (plain numbers).
