@@ -8,7 +8,7 @@
 //       --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true
 // prints, after Google Benchmark's table, a Markdown table: each precision's median CPU time,
 // its baseline's and their ratio (scripts/benchmark-damping-set.sh writes it into
-// docs/numerics.md).
+// docs/results/numerics.md).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -67,16 +67,16 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   pointmass_benchmarks::MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
-  // The table docs/numerics.md shows (scripts/benchmark-damping-set.sh writes it there).
+  // The table docs/results/numerics.md shows (scripts/benchmark-damping-set.sh writes it there).
   const auto row = [&](const char* name, const char* set, const char* baseline,
-                       const char* before) {
+                       const char* baseline_label) {
     const auto a = reporter.times().find(name);
     const auto b = reporter.times().find(baseline);
     if (a == reporter.times().end() || b == reporter.times().end() || !(b->second > 0)) return;
-    std::printf("| `%s` | %.1f ns | %s: %.1f ns | %.2f |\n", set, a->second, before, b->second,
-                a->second / b->second);
+    std::printf("| `%s` | %.1f ns | %s: %.1f ns | %.2f |\n", set, a->second, baseline_label,
+                b->second, a->second / b->second);
   };
-  std::printf("| set | median | the C library's log for the same precision before | ratio |\n");
+  std::printf("| set | median | the C library's log in the same precision | ratio |\n");
   std::printf("|---|---|---|---|\n");
   row("LogDamping<float>", "damping::LogDamping<float>(d)", "log(double) of a float",
       "`log` of the float as a double");

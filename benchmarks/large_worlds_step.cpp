@@ -11,7 +11,7 @@
 // the least any loop over each storage does (BM_Traffic: every byte loaded, one addition,
 // stored back), so that what wider positions cost the hardware itself is measured in the
 // same run.
-// scripts/large-worlds.sh runs it and writes the ratios into docs/large-worlds.md.
+// scripts/large-worlds.sh runs it and writes the ratios into docs/results/large-worlds.md.
 // Counters: items_per_second = particle-steps per second.
 #include <pointmass/particle_system.hpp>
 

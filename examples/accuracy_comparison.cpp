@@ -8,7 +8,7 @@
 // "float/compensated-pos") with PerSecond + Euler and Exact + Exact. Printed:
 //   1. per ballistic shot, the error of every policy combination at 1/30 .. 1/240 s against
 //      the continuous model it approximates, and the observed order as the frame time halves
-//      (the same tables as docs/accuracy.md);
+//      (the same tables as docs/results/accuracy.md);
 //   2. one row per variant and frame time: the error against the scene's own motion, drag
 //      included (the closed form for the ballistic shots, Boost.Odeint for the spring;
 //      tests/support/accuracy.hpp), largest over the scene, in metres; the time per

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSL-1.0
-# The drift tables of docs/large-worlds.md (scripts/large-worlds.sh); the smoke test runs
+# The drift tables of docs/results/large-worlds.md (scripts/large-worlds.sh); the smoke test runs
 # 10^4 steps and checks that the tables come out.
 if(POINTMASS_BUILD_TESTS)
   add_test(NAME example.large_worlds COMMAND large_worlds --quick)

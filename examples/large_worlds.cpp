@@ -8,7 +8,8 @@
 //     step length alone (1/60 rounded to float) moves a 10 m/s flight by about 9 mm.
 // Built without FMA contraction (large_worlds.cmake), so that the all-float and the wide
 // particles compute the same float velocities, bit for bit.
-// Prints Markdown tables (scripts/large-worlds.sh writes them into docs/large-worlds.md).
+// Prints Markdown tables (scripts/large-worlds.sh writes them into
+// docs/results/large-worlds.md).
 //   large_worlds           the tables
 //   large_worlds --quick   10^4 steps (the smoke test)
 #include <pointmass/pointmass.hpp>

@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: BSL-1.0
 # What setting a PerSecond or Exact damping value costs (the library's own logarithm) against
 # the C library's log and logl, medians of interleaved repetitions in one run
-# (benchmarks/damping_set.cpp, clang at -O2), written into docs/numerics.md between the
-# damping-set markers.
+# (benchmarks/damping_set.cpp, clang at -O2), written into docs/results/numerics.md between
+# the damping-set markers.
 # Usage: scripts/benchmark-damping-set.sh [repetitions]   (default 9)
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
@@ -26,5 +26,5 @@ cpu=$(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -n 1)
   echo
   grep '^|' <<<"$output"
 } > "$dir/table.md"
-replace_between_markers "$POINTMASS_ROOT/docs/numerics.md" damping-set "$dir/table.md"
-echo "updated docs/numerics.md"
+replace_between_markers "$POINTMASS_ROOT/docs/results/numerics.md" damping-set "$dir/table.md"
+echo "updated docs/results/numerics.md"

@@ -3,8 +3,8 @@
 # Which builds reproduce the same trajectories: builds tests/hardening/determinism.cpp with each
 # compiler and set of flags below, runs it, and prints its digest over every trajectory and
 # whether the scalar and batch paths agreed bit for bit, as a Markdown table that it writes
-# into docs/numerics.md ("Determinism") between the determinism markers. The 32-bit x86 build
-# runs natively; the ARM ones, cross-compiled by clang, under qemu-user.
+# into docs/results/numerics.md ("Determinism") between the determinism markers. The 32-bit
+# x86 build runs natively; the ARM ones, cross-compiled by clang, under qemu-user.
 # Usage: scripts/determinism-report.sh
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -57,4 +57,4 @@ done
   echo "|---|---|---|"
   printf '%s' "$rows"
 } >"$table"
-publish_table "$POINTMASS_ROOT/docs/numerics.md" determinism "$table"
+publish_table "$POINTMASS_ROOT/docs/results/numerics.md" determinism "$table"

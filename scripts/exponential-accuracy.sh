@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSL-1.0
-# Regenerates the accuracy table of the library's exponential in docs/numerics.md: builds
-# tests/reference/exponential_accuracy.cpp (g++, against __float128), runs it and writes its
-# table between the exponential markers.
+# Regenerates the accuracy table of the library's exponential in docs/results/numerics.md:
+# builds tests/reference/exponential_accuracy.cpp (g++, against __float128), runs it and
+# writes its table between the exponential markers.
 # Usage: scripts/exponential-accuracy.sh [samples per row]   (default 2000000)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -19,5 +19,5 @@ table="$build/exponential-table.md"
   "$build/tests/reference/pointmass_exponential_accuracy" "$samples"
 } >"$table"
 cat "$table"
-replace_between_markers "$POINTMASS_ROOT/docs/numerics.md" exponential "$table"
-echo "updated docs/numerics.md"
+replace_between_markers "$POINTMASS_ROOT/docs/results/numerics.md" exponential "$table"
+echo "updated docs/results/numerics.md"

@@ -5,7 +5,8 @@
 // `Real` is float, double or long double; any other type is rejected by the concept. Every
 // function here computes in the precision of its argument and returns that type:
 // `real_pow(float, float)` calls `powf`, never `pow` on promoted doubles, so a float particle
-// stays in float arithmetic end to end (the library builds clean under -Wdouble-promotion).
+// stays in float arithmetic end to end (the library builds clean under -Wdouble-promotion;
+// its constants are written R(0.5), never 0.5).
 //
 // `scalar_t<T>` is the Real a (possibly dimensioned) type is made of: `float` for float,
 // `Y` for a Boost.Units `quantity<Unit, Y>` (specialised in units.hpp).

@@ -33,8 +33,9 @@
 //      e^x - 1 = (2^n - 1) + 2^n s while 2^n - 1 is exact (n <= 20), which keeps the relative
 //      accuracy near x = 0, and e^x - 1 beyond.
 // No integer conversion of a float and no 64-bit arithmetic shift: SSE2 (plain -O2 on x86-64)
-// vectorises it all. Accuracy, measured against long double and __float128: docs/numerics.md
-// (scripts/exponential-accuracy.sh prints it; tests/test_exponential.cpp checks the bounds).
+// vectorises it all. Accuracy, measured against long double and __float128:
+// docs/results/numerics.md (scripts/exponential-accuracy.sh writes it;
+// tests/test_exponential.cpp checks the bounds).
 //
 // It relies on IEEE arithmetic rounding to nearest: not valid under -ffast-math (which may
 // reassociate the shifter trick away). Fused multiply-adds, where the compiler contracts,
@@ -361,7 +362,7 @@ struct SplitLog {
 /// for double and for long double where it is double), so hi + lo is the same everywhere: on
 /// a CUDA device, on 32-bit ARM and with MSVC as on x86-64, whatever the C library's log.
 /// Where long double is wider than double, the C library's logl, with lo = 0. Not on the hot
-/// path: called when a damping value is set (docs/numerics.md measures what that costs). A
+/// path: called when a damping value is set (docs/results/numerics.md measures what that costs). A
 /// constant expression for float and double (and long double where it is double): a damping
 /// value can be set at compile time.
 template <Real R>
@@ -370,6 +371,8 @@ POINTMASS_HD constexpr SplitLog<R> split_log(R d) noexcept {
   if constexpr (wider_than_double_v<R>) {
     return {d > R(0) ? real_log(d) : -real_infinity<R>, R(0)};
   } else {
+    // ln 0 as a finite stand-in, so that t ln d at t = 0 is 0, not 0 * -infinity (an
+    // invalid operation), and d^t is exactly 0 from a tiny t on.
     if (!(d > R(0))) return {ExpTraits<R>::log_of_zero, R(0)};
     if constexpr (std::is_same_v<R, float>) {
       const double wide = log_double(static_cast<double>(d));

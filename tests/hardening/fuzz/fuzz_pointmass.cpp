@@ -376,7 +376,7 @@ void fuzz_particle(Input& in) {
                         identical(body.velocity(), start.velocity()),
                     "an immovable particle moved");
           }
-          if (t == R(0)) {  // docs/numerics.md, "A zero step": immovable or not
+          if (t == R(0)) {  // a zero step, immovable or not (docs/numerics.md, "The model")
             require(same_state(body, start), "a zero step changed the particle");
           } else {
             require(identical(body.force_accumulator(), Vector3<R>{}), "accumulator not cleared");
