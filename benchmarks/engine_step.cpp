@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// The reference engine's own job, side by side: every particle with its own damping (0.99 per
+// Cyclone's own job, side by side: every particle with its own damping (0.99 per
 // second), mass and acceleration (gravity), stepped at 1/60 s, against
 //   * the engine's particle (tests/support/reference_engine.*: its 72-byte float / 144-byte
 //     double layout with padded vectors, its integrate out of line in its own translation
@@ -67,7 +67,7 @@ template <class R>
 constexpr Vector3<R> gravity_vector{R(0), R(-9.81f), R(0)};
 
 /// `count` particles of type P set up from starts<R>: a Vector3<R> is passed through
-/// `vector` (the reference engine's particle takes its own vector type).
+/// `vector` (Cyclone's particle takes its own vector type).
 template <class P, class R, class ToVector>
 std::vector<P> particles_from_starts(std::size_t count, ToVector vector) {
   std::vector<P> particles(count);
@@ -103,7 +103,7 @@ void integrate_loop(benchmark::State& state, std::vector<P>& particles) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(particles.size()));
 }
 
-// --- the reference engine's loop: the baseline ------------------------------------------------
+// --- Cyclone's loop: the baseline ------------------------------------------------
 
 template <class R, bool Varying>
 void BM_Engine(benchmark::State& state) {

@@ -213,7 +213,7 @@ void BM_BandwidthParallel(benchmark::State& state) {
   bandwidth_parallel(state, arrays);
 }
 
-// The seed's layout: one Particle object per particle, each integrated on its own.
+// One Particle object per particle, each integrated on its own.
 template <class R>
 void BM_Particles(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));

@@ -265,7 +265,7 @@ int main(int argc, char** argv) {
 
   if (!options.summary_only && options.scene == "ballistic") {
     std::puts(
-        "pointmass: accuracy of every policy combination on the reference engine's ballistic "
+        "pointmass: accuracy of every policy combination on Cyclone's ballistic "
         "shots");
     std::puts("(largest position error in metres over 5 s against the exact solution, double;");
     std::puts(" 'exact' = the step is the model's exact flow, the error is rounding)\n");

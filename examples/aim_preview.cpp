@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // aim_preview — an artillery aim preview from the exact pair's trajectory queries.
 //
-// A game showing where a shell will go before it is fired: the reference engine's artillery
+// A game showing where a shell will go before it is fired: Cyclone's artillery
 // shell (200 kg, 50 m/s, gravity 20 m/s^2, 99% of the velocity kept per second) aimed at
 // 30, 45 and 60 degrees over a wall 20 m high at z = 60 m. For each aim the preview asks, without
 // stepping anything:

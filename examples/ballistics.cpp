@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// ballistics — the reference engine's ballistic demo as a terminal program.
+// ballistics — Cyclone's ballistic demo as a terminal program.
 //
 // Four shots leave (0, 1.5, 0): pistol, artillery, fireball and laser (scenes.hpp has their
 // mass, velocity, gravity and damping). Each flies on a fixed time step until it falls below
@@ -8,10 +8,10 @@
 // (scripts/plot-ballistics.sh draws the side view with gnuplot).
 //
 // The particle uses the exact pair: per-second damping solved in closed form, so the
-// trajectory is the true one at any step; --seed flies the seed's engine instead
+// trajectory is the true one at any step; --defaults flies the defaults instead
 // (eq. 3.6 and p + v t) to compare.
 //
-//   ballistics [--dt SECONDS] [--seed] [--csv FILE]
+//   ballistics [--dt SECONDS] [--defaults] [--csv FILE]
 #include <pointmass/extras/scenes.hpp>
 #include <pointmass/pointmass.hpp>
 
@@ -71,17 +71,17 @@ void fly(const scenes::BallisticShot<double>& shot, double dt, std::FILE* csv) {
 
 int main(int argc, char** argv) {
   double dt = 1.0 / 60;
-  bool seed = false;
+  bool defaults = false;
   const char* csv_path = nullptr;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--dt") == 0 && i + 1 < argc) {
       dt = std::strtod(argv[++i], nullptr);
-    } else if (std::strcmp(argv[i], "--seed") == 0) {
-      seed = true;
+    } else if (std::strcmp(argv[i], "--defaults") == 0) {
+      defaults = true;
     } else if (std::strcmp(argv[i], "--csv") == 0 && i + 1 < argc) {
       csv_path = argv[++i];
     } else {
-      std::fprintf(stderr, "usage: %s [--dt SECONDS] [--seed] [--csv FILE]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--dt SECONDS] [--defaults] [--csv FILE]\n", argv[0]);
       return 2;
     }
   }
@@ -100,9 +100,10 @@ int main(int argc, char** argv) {
   }
 
   std::printf("%s, step %.6f s\n",
-              seed ? "seed engine (eq. 3.6, p + v t)" : "exact pair (closed form with drag)", dt);
+              defaults ? "the defaults (eq. 3.6, p + v t)" : "exact pair (closed form with drag)",
+              dt);
   for (const auto& shot : scenes::ballistic_shots<double>) {
-    if (seed) {
+    if (defaults) {
       fly<Particle<double>>(shot, dt, csv);
     } else {
       fly<Particle<double, damping::Exact, position::Exact>>(shot, dt, csv);

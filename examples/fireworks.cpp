@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// fireworks — the reference engine's fireworks demo on the batch ParticleSystem.
+// fireworks — Cyclone's fireworks demo on the batch ParticleSystem.
 //
 // Nine firework types (rules): each has a fuse range, a box its launch velocity is drawn
 // from, a damping (per second) and a payload: when the fuse burns out the firework bursts
@@ -66,7 +66,7 @@ struct Rule {
   std::array<Payload, 2> payloads;  // count 0: none
 };
 
-// The reference engine's nine rules (index 0 is type 1).
+// Cyclone's nine rules (index 0 is type 1).
 const std::array<Rule, 9> rules{{
     {0.5f, 1.4f, {-5, 25, -5}, {5, 28, 5}, 0.1f, {{{3, 5}, {5, 5}}}},
     {0.5f, 1.0f, {-5, 10, -5}, {5, 20, 5}, 0.8f, {{{4, 2}, {0, 0}}}},

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// The reference engine's ballistic shots, with Boost.Units: every value the particle takes or
+// Cyclone's ballistic shots, with Boost.Units: every value the particle takes or
 // gives is an SI quantity, and a dimension slip (a velocity as a position, a force as an
 // acceleration, a duration in metres) does not compile. See docs/units.md.
 //

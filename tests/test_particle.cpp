@@ -27,7 +27,7 @@ static_assert(!Particle<float, damping::PerFrame>::caches_factors &&
               !Particle<float, damping::None>::caches_factors);
 static_assert(!Particle<float, damping::None>::stores_damping);
 static_assert(Particle<float>::stores_damping);
-// The seed's defaults.
+// The defaults.
 static_assert(std::is_same_v<Particle<float>::damping_policy, damping::PerSecond>);
 static_assert(std::is_same_v<Particle<float>::position_policy, position::Euler>);
 static_assert(std::is_trivially_copyable_v<Particle<float>>);
@@ -196,7 +196,7 @@ TEST_CASE_TEMPLATE("gravity helpers", R, float, double) {
   }
 }
 
-TEST_CASE("the scenes hold the reference engine's shots") {
+TEST_CASE("the scenes hold Cyclone's shots") {
   const auto& shots = scenes::ballistic_shots<double>;
   REQUIRE(shots.size() == 4);
   CHECK(shots[0].name == "pistol");

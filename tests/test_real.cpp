@@ -160,7 +160,7 @@ TEST_CASE("real_pow of floats is powf, not pow on promoted doubles") {
 }
 
 TEST_CASE("the listing's factor is powf's bit for bit, and eq. 3.6's is float's own exponential") {
-  // AccelerateThenDamp reproduces the reference engine, which calls powf: the same bits.
+  // AccelerateThenDamp reproduces Cyclone, which calls powf: the same bits.
   // PerSecond computes e^(t ln d) in float, within 4 ulp of the correctly rounded d^t
   // (tests/test_exponential.cpp), and never promotes to double (the type is checked above).
   using pointmass::damping::AccelerateThenDamp;

@@ -2,7 +2,7 @@
 // pointmass/gravity.hpp — gravity as an acceleration.
 //
 // Near the Earth f = m g (eq. 3.4), so p'' = g for any mass: gravity is set as the particle's
-// acceleration (0, -g, 0), positive Y up, and g is tunable per particle. The text's values:
+// acceleration (0, -g, 0), positive Y up, and g is tunable per particle. Millington's values:
 // 9.807 m/s^2 (the scientific mean), and what games use for a livelier feel: 15 (shooters)
 // and 20 (driving games).
 //

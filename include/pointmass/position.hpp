@@ -43,7 +43,7 @@
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::position {
 
-/// The text's short form: p1 = p0 + v0 t, with the velocity from the start of the step.
+/// Millington's short form: p1 = p0 + v0 t, with the velocity from the start of the step.
 /// Local error a t^2 / 2; first order. The cheapest update.
 struct Euler {
   /// Global order of accuracy against the continuous model.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// Each generator against its formula worked by hand, the reference engine's bugs pinned by
+// Each generator against its formula worked by hand, Cyclone's bugs pinned by
 // regression tests, bad parameters rejected, and the batch path equal to the particle path.
 #include <doctest/doctest.h>
 
@@ -42,7 +42,7 @@ TEST_CASE_TEMPLATE("gravity adds m g, and nothing to an immovable particle", R, 
   CHECK(f.x == R(0));
   CHECK(close(f.y, R(-19.614), R(2)));
   CHECK(f.z == R(0));
-  // Regression: the reference engine's generators that multiply by the mass give an
+  // Regression: Cyclone's generators that multiply by the mass give an
   // immovable particle an infinite force; here it gets none (and no contract violation).
   const Vector3<R> none = force_on(gravity, immovable_at<R>({R(1), R(2), R(3)}));
   CHECK(none == Vector3<R>{});
@@ -63,7 +63,7 @@ TEST_CASE_TEMPLATE("anchored spring: -k (|d| - L) d/|d|, pushing when compressed
   // Stretched by 1 along +x: pulled back with 10 N.
   CHECK(close(force_on(spring, body_at<R>({R(4), R(0), R(0)})), Vector3<R>{R(-10), R(0), R(0)},
               R(2)));
-  // Regression (the reference engine takes |(|d| - L)|, so a compressed spring pulls):
+  // Regression (Cyclone takes |(|d| - L)|, so a compressed spring pulls):
   // compressed by 1, the body is pushed away from the anchor.
   CHECK(
       close(force_on(spring, body_at<R>({R(2), R(0), R(0)})), Vector3<R>{R(10), R(0), R(0)}, R(2)));
@@ -95,7 +95,7 @@ TEST_CASE_TEMPLATE("spring between particles pulls them together, equal and oppo
 TEST_CASE_TEMPLATE("bungee pulls when stretched and never pushes", R, float, double) {
   Particle<R> other = body_at<R>({R(0), R(0), R(0)});
   const forces::Bungee<Particle<R>> bungee(other, R(5), R(2));
-  // Regression (the reference engine multiplies by -k (L - |d|): a stretched bungee pushes
+  // Regression (Cyclone multiplies by -k (L - |d|): a stretched bungee pushes
   // the ends apart). Stretched by 1 at (3, 0, 0): pulled back towards the other end.
   CHECK(
       close(force_on(bungee, body_at<R>({R(3), R(0), R(0)})), Vector3<R>{R(-5), R(0), R(0)}, R(2)));
@@ -122,7 +122,7 @@ TEST_CASE_TEMPLATE("buoyancy is rho V g times the submerged fraction, always upw
   // engine adds rho V (980 times too small with g = 9.807: a mass, not a force).
   CHECK(close(force_on(buoyancy, body_at<R>({R(0), R(-0.5), R(0)})).y, full, R(4)));
   CHECK(close(force_on(buoyancy, body_at<R>({R(0), R(-30), R(0)})).y, full, R(4)));
-  // Regression: the reference engine's partly-submerged force, (y - D - h) / 2 * D, is
+  // Regression: Cyclone's partly-submerged force, (y - D - h) / 2 * D, is
   // negative. Here, at every depth, the force is upwards, and it grows as the body sinks.
   R previous = R(0);
   for (int i = 0; i <= 400; ++i) {
@@ -142,13 +142,13 @@ TEST_CASE_TEMPLATE("buoyancy is rho V g times the submerged fraction, always upw
 TEST_CASE_TEMPLATE("stiff spring: finite in every damping regime, nothing when immovable", R, float,
                    double) {
   const Particle<R> body = body_at<R>({R(1), R(0), R(0)}, {R(0), R(1), R(0)}, R(1));
-  // Regression: the reference engine's fake spring takes sqrt(4 k - c^2), NaN over-damped.
+  // Regression: Cyclone's fake spring takes sqrt(4 k - c^2), NaN over-damped.
   const forces::PositionOnlyStiffSpring<R> over({}, R(1), R(10));
   const Vector3<R> f_over = force_on(over, body, R(0.1));
   CHECK(pointmass::is_finite(f_over));
   CHECK(f_over.x < R(0));  // back towards the anchor
   CHECK(f_over.y < R(0));  // against the velocity
-  // Regression: critically damped (c^2 = 4 k m), the reference engine adds no force at all.
+  // Regression: critically damped (c^2 = 4 k m), Cyclone adds no force at all.
   const forces::PositionOnlyStiffSpring<R> critical({}, R(4), R(4));
   const Vector3<R> f_critical = force_on(critical, body, R(0.1));
   CHECK(pointmass::is_finite(f_critical));

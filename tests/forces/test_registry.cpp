@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// The registry: add, remove and clear work (the reference engine declares remove and clear
+// The registry: add, remove and clear work (Cyclone declares remove and clear
 // but never defines them), and compile-time known and type-erased generators give the same
 // forces.
 #include <doctest/doctest.h>

@@ -252,7 +252,7 @@ TEST_CASE_TEMPLATE("far from the origin: within 1 mm of the exact sum of the flo
   SUBCASE("sparks from 1e6 m, per-frame drag (PerFrame, ConstantAcceleration)") {
     check_far<S, d::PerFrame, p::ConstantAcceleration>(sparks(1e6));
   }
-  SUBCASE("artillery from 1e6 m, the reference engine's drag (AccelerateThenDamp, SemiImplicit)") {
+  SUBCASE("artillery from 1e6 m, Cyclone's drag (AccelerateThenDamp, SemiImplicit)") {
     check_far<S, d::AccelerateThenDamp, p::SemiImplicit>(artillery(1e6));
   }
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// Code ported from the reference engine keeps its trajectories: Particle<R,
+// Code ported from Cyclone keeps its trajectories: Particle<R,
 // damping::AccelerateThenDamp, position::Euler> against the engine's particle as the
 // specification describes it (tests/support/reference_engine.*, its integrate compiled in its
 // own translation unit), bit for bit at every step, float and double: damping from none to
@@ -25,7 +25,7 @@ bool same_bits(const Vector3<R>& ours, const reference_engine::Vector3<R>& their
 
 }  // namespace
 
-TEST_CASE_TEMPLATE("the listing's policy replays the reference engine's particles bit for bit", R,
+TEST_CASE_TEMPLATE("the listing's policy replays Cyclone's particles bit for bit", R,
                    float, double) {
   using Ported = Particle<R, damping::AccelerateThenDamp, position::Euler>;
   constexpr int count = 6;

@@ -196,7 +196,7 @@ TEST_CASE(
     const auto ratios = energy_ratios.template operator()<position::SemiImplicit>(2.1, 100);
     CHECK(ratios.back() > 1e6);
   }
-  SUBCASE("the seed's explicit form multiplies the energy by exactly 1 + (omega h)^2 a step") {
+  SUBCASE("the default explicit form multiplies the energy by exactly 1 + (omega h)^2 a step") {
     const double r = 0.1;
     const auto ratios = energy_ratios.template operator()<position::Euler>(r, 1000);
     for (std::size_t n = 0; n < ratios.size(); n += 100) {
@@ -291,7 +291,7 @@ TEST_CASE_TEMPLATE("a long run: 10^6 steps of the undamped spring, semi-implicit
 }
 
 TEST_CASE_TEMPLATE(
-    "a long run: 10^6 steps of the seed's defaults settle at their terminal velocity", R, float,
+    "a long run: 10^6 steps of the defaults settle at their terminal velocity", R, float,
     double) {
   // The fireball rises against per-second damping 0.9: v* = a h / (1 - d^h), the fixed point
   // of v d^h + a h.

@@ -51,7 +51,7 @@ struct Scene {
 
 inline Vector3<double> to_double(const Vector3<double>& v) { return v; }
 
-/// The reference engine's four ballistic shots (scene 2), 5 s from (0, 1.5, 0).
+/// Cyclone's four ballistic shots (scene 2), 5 s from (0, 1.5, 0).
 inline std::vector<Scene> ballistic_scenes() {
   std::vector<Scene> scenes;
   for (const auto& shot : scenes::ballistic_shots<double>) {

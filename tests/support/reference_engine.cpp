@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// The reference engine's integrate, out of line (see reference_engine.hpp): what a loop over
+// Cyclone's integrate, out of line (see reference_engine.hpp): what a loop over
 // the engine's particles pays is this call, and one pow in it.
 #include "reference_engine.hpp"
 

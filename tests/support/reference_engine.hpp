@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// A stand-in for the reference engine's particle, as /work/shared/SPEC.md describes it, for
+// A stand-in for Cyclone's particle, as /work/shared/SPEC.md describes it, for
 // benchmarks/engine_step.cpp (its cost) and tests/reference/test_engine_replay.cpp (its
 // trajectories): a vector of x, y, z and one padding component (16 bytes in float, 32 in
 // double); a particle storing, in this order, inverse mass, damping, position, velocity,
