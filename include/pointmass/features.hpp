@@ -2,11 +2,9 @@
 // pointmass/features.hpp — what a ParticleSystem may store, and the table of its arrays.
 //
 // Owns: the feature tags (namespace pointmass::features), the `Column` names of the arrays,
-// and `detail::SystemLayout`, the compile-time table that says which arrays a configuration
-// stores, of what element type, and so how many and how many bytes per particle. Everything
-// that walks the arrays (allocation, copy, swap-remove, the step) is generated from the one
-// table below: adding an array is one line in it (and its name in `Column`).
-//
+// and `detail::SystemLayout`, the compile-time table of which arrays a configuration stores,
+// of what element type. Everything that walks the arrays (allocation, copy, swap-remove, the
+// step) is generated from it: adding an array is one line in it (and its name in `Column`).
 // Must not include: particle.hpp, particle_system.hpp or anything that steps (this header is
 // below the storage and the kernel).
 #pragma once
@@ -164,7 +162,6 @@ template <class... Features>
 using user_columns_t = decltype(std::tuple_cat(
     std::declval<std::conditional_t<is_user_column<Features>::value, std::tuple<Features>,
                                     std::tuple<>>>()...));
-
 /// Pointer I of a layout's user columns (one base per column, so the pack of pointers stays
 /// an aggregate-like, trivially copyable struct that a device loop may take by value).
 template <std::size_t I, class T>
@@ -182,7 +179,6 @@ template <class Columns>
 using UserPointers =
     typename UserPointersBuilder<std::make_index_sequence<std::tuple_size_v<Columns>>,
                                  Columns>::type;
-
 /// The bytes per particle of the user columns Columns, and the largest element among them.
 template <class Columns>
 struct UserColumnSizes;
@@ -196,7 +192,6 @@ struct UserColumnSizes<std::tuple<Columns...>> {
     return result;
   }();
 };
-
 /// The index of the user column tagged Tag in Columns (the count when there is none).
 template <class Tag, class Columns, std::size_t I = 0>
 constexpr std::size_t user_column_index() {
