@@ -118,7 +118,7 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
   // --- the step ------------------------------------------------------------------------------
 
   // The kept factors where the last step had this length, else computed (the scalar form, the
-  // same bits): reads the system only, so loops of one's own may call it as before.
+  // same bits): reads the system only, so begin_step keeps nothing (the library's steps do).
   [[nodiscard]] StepParameters step_parameters(R duration) const noexcept {
     if constexpr (keeps_factors) {
       if (same_bits(duration, kept_.duration)) return parameters_with(duration, kept_.factors);
