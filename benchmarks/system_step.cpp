@@ -352,7 +352,7 @@ void BM_CopyInterpolated(benchmark::State& state) {
   BM_CopyOut<R, 3>(state);
 }
 
-// A renderer's hand-off from wide positions (precision.hpp): positions_relative_to a camera
+// A renderer's hand-off from wide positions (precision.hpp): copy_positions(out, camera)
 // near the particles, which are spread over a kilometre 1e6 m out, into {x, y, z} floats;
 // each offset rounded once (round_via_odd), the cost beside copy_positions' from float.
 template <class S>

@@ -33,8 +33,8 @@
 // A wide position is read and set as its value type (`position_value_t`): double for double
 // and for Compensated<float> (hi + lo rounded to double; a set double is split into hi and
 // lo), long double for Compensated<double>. A renderer wants a float position relative to
-// its camera: `position_relative_to(origin)` (Particle) and `positions_relative_to(origin,
-// buffer)` (ParticleSystem) compute it from the full stored position, exact wherever the true
+// its camera: `position_relative_to(origin)` (Particle) and `copy_positions(out,
+// origin)` (ParticleSystem) compute it from the full stored position, exact wherever the true
 // offset is a float.
 //
 // Owns: Precision<R, Position>, Compensated<R>, and how such a position is stored, stepped
@@ -208,16 +208,16 @@ POINTMASS_HD constexpr T round_once(W z, W r) noexcept {
   }
 }
 
-/// The same result as round_once<T>(z, r), without a branch, so that a loop over many
-/// offsets (positions_relative_to) vectorises and does not mispredict: z is first rounded to
-/// odd in W (z itself when exact or when its last bit is odd, else its neighbour on r's
-/// side, the other W around x), then to nearest in T. Rounding to odd with at least two
-/// more digits than T's and then to nearest rounds once: every T and every midpoint between
-/// two T (the boundaries of rounding to nearest, overflow's included) is a W with an even
-/// last bit, so an odd W lies strictly on x's side of each. z must be x rounded to nearest
-/// in W (or either W around x), r of the sign of x - z; z = 0 is taken as exact (x is then
-/// too small for any T but 0), and an infinite z or a NaN r as z. For W of IEEE bits only
-/// (float or double) with T at least two digits narrower; round_once otherwise.
+/// The same result as round_once<T>(z, r), without a branch, so that a loop over many offsets
+/// (copy_positions(out, origin)) vectorises and does not mispredict: z is first rounded to odd in W
+/// (z itself when exact or when its last bit is odd, else its neighbour on r's side, the other W
+/// around x), then to nearest in T. Rounding to odd with at least two more digits than T's and then
+/// to nearest rounds once: every T and every midpoint between two T (the boundaries of rounding to
+/// nearest, overflow's included) is a W with an even last bit, so an odd W lies strictly on x's
+/// side of each. z must be x rounded to nearest in W (or either W around x), r of the sign of x -
+/// z; z = 0 is taken as exact (x is then too small for any T but 0), and an infinite z or a NaN r
+/// as z. For W of IEEE bits only (float or double) with T at least two digits narrower; round_once
+/// otherwise.
 template <Real T, Real W>
 POINTMASS_HD constexpr T round_via_odd(W z, W r) noexcept {
   if constexpr (!has_ieee_bits_v<W> ||

@@ -61,12 +61,12 @@ static_assert(
 static_assert(pm::ParticleSystem<float>::storage_bytes_per_particle == 24);
 static_assert(pm::ParticleSystem<DoublePositions>::storage_bytes_per_particle == 36);
 static_assert(pm::ParticleSystem<CompensatedPositions>::storage_bytes_per_particle == 36);
-static_assert(pm::pointmass::detail::SystemAccess::Layout<
-                  ParticleSystem<CompensatedPositions>>::array_count == 9);
+static_assert(pm::detail::SystemAccess::Layout<pm::ParticleSystem<CompensatedPositions>>::array_count ==
+              9);
 static_assert(pm::ParticleSystem<CompensatedPositions>::stores<pm::Column::position_error_x>);
 static_assert(!pm::ParticleSystem<DoublePositions>::stores<pm::Column::position_error_x>);
 static_assert(
-    std::is_same_v<pm::ParticleSystem<DoublePositions>::element_t<pm::Column::position_x>, double>);
+    std::is_same_v<pm::ParticleSystem<DoublePositions>::position_element, double>);
 // The particle with Compensated<float> stores 3 floats more than the float one; with double
 // positions 3 doubles instead of 3 floats.
 static_assert(sizeof(pm::Particle<CompensatedPositions, pm::damping::None>) ==
@@ -450,7 +450,7 @@ TEST_CASE(
       continue;
     }
     with_error_term += a.position_error_x[j] != 0.0f;
-    system.positions_relative_to(camera, buffer);
+    system.copy_positions(buffer, camera);
     CHECK(same_bits(buffer[j], t));
     CHECK(same_bits(system.position_relative_to(j, camera), t));
     for (std::size_t i = 0; i < system.size(); ++i) {
@@ -501,8 +501,8 @@ TEST_CASE("render-relative: rounded once at the edge of the range too") {
   CHECK(offset.y == -std::numeric_limits<float>::max());
   pm::ParticleSystem<DoublePositions> system(1);
   system.spawn(far);
-  Vector3<float> batch[1];  // the branch-free rounding of positions_relative_to
-  system.positions_relative_to({1e-30, -1e-30, 0}, batch);
+  Vector3<float> batch[1];  // the branch-free rounding of copy_positions(out, origin)
+  system.copy_positions(batch, {1e-30, -1e-30, 0});
   CHECK(batch[0].x == std::numeric_limits<float>::max());
   CHECK(batch[0].y == -std::numeric_limits<float>::max());
   // The same for double from long double, where long double is wider.
@@ -515,7 +515,7 @@ TEST_CASE("render-relative: rounded once at the edge of the range too") {
 }
 
 TEST_CASE("round_via_odd: round_once's float, branch-free, for every kind of double offset") {
-  // positions_relative_to rounds each offset z + r (z the double nearest, r of the sign of
+  // copy_positions(out, origin) rounds each offset z + r (z the double nearest, r of the sign of
   // what z dropped) to float by way of rounding to odd; round_once (checked against long
   // double below) does it with branches. They must agree bit for bit on float midpoints
   // from either side, exact values, offsets in float's subnormal range and beyond its
@@ -606,8 +606,8 @@ TEST_CASE_TEMPLATE("render-relative: the exact offset rounded once to float, aga
     const Vector3<double> camera{o, -o, 0};
     const Vector3<float> got = particle.position_relative_to(camera);
     system.set_position(0, particle.position());
-    Vector3<float> batch[1];  // positions_relative_to: the branch-free rounding (round_via_odd)
-    system.positions_relative_to(camera, batch);
+    Vector3<float> batch[1];  // copy_positions(out, origin): the branch-free rounding (round_via_odd)
+    system.copy_positions(batch, camera);
     if (!same_bits(got, Vector3<float>{oracle, -oracle, 0}) ||
         !same_bits(system.position_relative_to(0, camera), got) || !same_bits(batch[0], got)) {
       INFO("p = ", p, ", o = ", o);
@@ -683,13 +683,13 @@ TEST_CASE("render-relative: a particle and the system agree, and a short buffer 
   }
   const Vector3<double> camera{4.0e7 + 20000.0, 0.0, -2.5e6};
   std::vector<Vector3<float>> buffer(2);
-  system.positions_relative_to(camera, buffer);
+  system.copy_positions(buffer, camera);
   CHECK(same_bits(buffer[0], particle.position_relative_to(camera)));
   CHECK(same_bits(buffer[1], particle.position_relative_to(camera)));
 
   std::vector<Vector3<float>> short_buffer(1, Vector3<float>{7.0f, 7.0f, 7.0f});
-  CHECK_THROWS_WITH_AS(system.positions_relative_to(camera, short_buffer),
-                       doctest::Contains("positions_relative_to: argument 'buffer'"),
+  CHECK_THROWS_WITH_AS(system.copy_positions(short_buffer, camera),
+                       doctest::Contains("copy_positions: argument 'out'"),
                        std::invalid_argument);
   CHECK(same_bits(short_buffer[0], Vector3<float>{7.0f, 7.0f, 7.0f}));
 }
@@ -712,7 +712,7 @@ TEST_CASE_TEMPLATE("render-relative: a zero offset has IEEE's sign of zero on ev
       const auto wanted = static_cast<float>(p - o);
       const Vector3<float> expected{wanted, wanted, wanted};
       Vector3<float> batch[1];
-      system.positions_relative_to(origin, batch);
+      system.copy_positions(batch, origin);
       CHECK(same_bits(batch[0], expected));
       CHECK(same_bits(system.position_relative_to(0, origin), expected));
       CHECK(same_bits(particle.position_relative_to(origin), expected));
@@ -729,7 +729,7 @@ TEST_CASE("render-relative: an origin read from the buffer being written is the 
   system.spawn({4.0f, 5.0f, 6.0f}, {});
   system.spawn({7.0f, 8.0f, 9.0f}, {});
   std::vector<Vector3<float>> buffer(3, Vector3<float>{1.0f, 1.0f, 1.0f});
-  system.positions_relative_to(buffer[0], buffer);
+  system.copy_positions(buffer, buffer[0]);
   CHECK(same_bits(buffer[0], Vector3<float>{0.0f, 1.0f, 2.0f}));
   CHECK(same_bits(buffer[1], Vector3<float>{3.0f, 4.0f, 5.0f}));
   CHECK(same_bits(buffer[2], Vector3<float>{6.0f, 7.0f, 8.0f}));

@@ -6,7 +6,7 @@
 // (step_range_backward), and no other loop (Lifetime's expiry pass), so a vectorised loop
 // in the report can only be that walk's. With POINTMASS_PROBE_EXPIRY it instantiates only
 // finish_step, whose expiry pass scans a block of particles for an expired one.
-// With POINTMASS_PROBE_RELATIVE it compiles only positions_relative_to of a system with double
+// With POINTMASS_PROBE_RELATIVE it compiles only copy_positions(out, origin) of a system with double
 // positions, or with POINTMASS_PROBE_COMPENSATED as well of one with compensated positions
 // (the renderer's hand-off from wide positions; round_via_odd has no branch).
 // With POINTMASS_PROBE_EXPONENTIAL=<loop> it compiles only that loop of the library's
@@ -28,7 +28,7 @@ using Probed = pm::Precision<float, double>;
 
 void relative_probe(const pm::ParticleSystem<Probed>& system, const pm::Vector3<double>& camera,
                     std::span<pm::Vector3<float>> offsets) {
-  system.positions_relative_to(camera, offsets);
+  system.copy_positions(offsets, camera);
 }
 
 #elif defined(POINTMASS_PROBE_EXPONENTIAL)

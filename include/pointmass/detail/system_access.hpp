@@ -23,10 +23,19 @@ namespace detail {
 /// duration's (finish_step, which cannot know what a loop of the caller's did, forgets it).
 /// So the next step of the same length computes no exponential, as after step.
 struct SystemAccess {
+  // Class templates, not alias templates: an alias is checked for access where it is used.
   template <class System>
-  using Kernel = typename System::Kernel;
+  struct KernelOf {
+    using type = typename System::Kernel;
+  };
   template <class System>
-  using Layout = typename System::Layout;
+  struct LayoutOf {
+    using type = typename System::Layout;
+  };
+  template <class System>
+  using Kernel = typename KernelOf<System>::type;
+  template <class System>
+  using Layout = typename LayoutOf<System>::type;
   template <class System>
   static const typename System::Layout::Arrays& arrays(const System& system) noexcept {
     return system.State::arrays();

@@ -26,7 +26,7 @@
 //     step_range_backward over any ranges (zeros are compared by value only once a system
 //     without ForceAccumulator was given a -0 acceleration component: the scalar path adds a
 //     zero force to the acceleration, which turns it into +0).
-//   * The render hand-off (positions_relative_to, any origin, any buffer length): the same
+//   * The render hand-off (copy_positions(out, origin), any origin, any buffer length): the same
 //     bits as position_relative_to of the system and of the mirror's particle, exact wherever
 //     the true offset is a float, and nothing written past size() or when refused.
 //
@@ -894,7 +894,7 @@ bool exact_position(const System& system, std::size_t i, int k, long double& val
   return true;
 }
 
-// positions_relative_to with any origin (non-finite ones included; or one near a particle,
+// copy_positions(out, origin) with any origin (non-finite ones included; or one near a particle,
 // the usual camera) into a buffer of any length: refused with nothing written, or every offset the same bits as position_relative_to
 // of the system and of the mirror's particle, exact where the true offset is a float, and
 // nothing written past size().
@@ -1277,8 +1277,9 @@ void fuzz_system(Input& in) {
             break;
         }
         require(system.capacity() == copy.capacity(), "copy assignment changed the capacity");
-        require(!(assigned_to == 2 ? other : system).next_step_backward(),
-                "a copy-assigned system does not start walking forwards");
+        require(
+            !pointmass::detail::SystemAccess::next_step_backward(assigned_to == 2 ? other : system),
+            "a copy-assigned system does not start walking forwards");
         compare(copy, mirror, budget);  // the source of the copies is unchanged
         break;
       }
