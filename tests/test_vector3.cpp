@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
-// Vector3: arithmetic, products, magnitude and normalisation, in float and double.
+// Vector3: arithmetic, products, magnitude and normalisation, in float and double, and the
+// conversions between precisions.
 #include <doctest/doctest.h>
+
+#include <limits>
+#include <type_traits>
 
 #include <pointmass/vector3.hpp>
 
@@ -72,4 +76,19 @@ TEST_CASE_TEMPLATE("Vector3 magnitude and normalisation", T, float, double) {
   CHECK(pointmass::is_finite(v));
   CHECK_FALSE(pointmass::is_finite(Vector3<T>{T(0), std::numeric_limits<T>::infinity(), T(0)}));
   CHECK_FALSE(pointmass::is_finite(Vector3<T>{std::numeric_limits<T>::quiet_NaN(), T(0), T(0)}));
+}
+
+TEST_CASE("Vector3 converts between precisions: implicitly when exact, explicitly when it rounds") {
+  static_assert(std::is_convertible_v<Vector3<float>, Vector3<double>>);
+  static_assert(std::is_convertible_v<Vector3<double>, Vector3<long double>>);
+  static_assert(!std::is_convertible_v<Vector3<double>, Vector3<float>>);  // it rounds
+  static_assert(std::is_constructible_v<Vector3<float>, Vector3<double>>);
+  const Vector3<double> third{1.0 / 3.0, -2.0 / 3.0, 1e300};
+  const auto narrowed = static_cast<Vector3<float>>(third);
+  CHECK(narrowed.x == static_cast<float>(1.0 / 3.0));
+  CHECK(narrowed.y == static_cast<float>(-2.0 / 3.0));
+  CHECK(narrowed.z == std::numeric_limits<float>::infinity());  // out of float's range
+  const Vector3<double> widened = Vector3<float>{0.1f, 0.2f, 0.3f};
+  CHECK(widened.x == static_cast<double>(0.1f));
+  CHECK(widened.z == static_cast<double>(0.3f));
 }

@@ -142,6 +142,14 @@ struct Vector3 {
   POINTMASS_HD constexpr Vector3(T x_value, T y_value, T z_value) noexcept
       : x(x_value), y(y_value), z(z_value) {}
 
+  /// From a Vector3 of another floating-point type: implicit when every number converts
+  /// exactly (float to double), explicit otherwise (double to float rounds each component).
+  template <class U>
+    requires(std::is_floating_point_v<T>&& std::is_floating_point_v<U> && !std::is_same_v<T, U>)
+  POINTMASS_HD constexpr explicit(!detail::converts_exactly_v<U, T>)
+      Vector3(const Vector3<U>& v) noexcept
+      : x(static_cast<T>(v.x)), y(static_cast<T>(v.y)), z(static_cast<T>(v.z)) {}
+
   // --- to and from the user's vector types (VectorTraits, above) -------------------------------
   /// From a user's vector: implicit when every number converts exactly, explicit otherwise.
   template <class V>
