@@ -13,7 +13,7 @@
 //   * `ParticleSystem` configurations (BM_System, below);
 //   * the power function alone at the changing step lengths (BM_PowAlone).
 // scripts/benchmark-engine.sh runs it with interleaved repetitions and writes the table of
-// medians and ratios into docs/performance.md. Counters: items_per_second = particle-steps/s.
+// medians and ratios into docs/results/engine.md. Counters: items_per_second = particle-steps/s.
 #include <pointmass/particle.hpp>
 #include <pointmass/particle_system.hpp>
 
@@ -188,7 +188,7 @@ void BM_HandStruct(benchmark::State& state) {
 }
 
 // The same data as the default Particle<R> and the same arithmetic: what "a hand-written struct
-// loop of the same arithmetic" means in docs/performance.md. It holds what a Particle must to
+// loop of the same arithmetic" means in docs/results/engine.md. It holds what a Particle must to
 // take any damping and any step length (d and ln d as hi + lo, the last step's length and d^t)
 // and does, per particle, the Particle's step: compare the length with the kept one (computing
 // d^t with the library's exponential when it differs), then a = acceleration + force * inverse

@@ -157,7 +157,7 @@ using SparksOf = std::conditional_t<
 
 // How a hand-written loop walks its arrays from one step to the next: always forwards, or as
 // the storage's system does (forwards and backwards in turn within its size bounds, each
-// backward walk in whole chunks from the end, each chunk forwards: docs/performance.md).
+// backward walk in whole chunks from the end, each chunk forwards: detail/system_kernel.hpp).
 enum class Walk { forwards, like_the_system };
 
 template <Storage S, Walk W>

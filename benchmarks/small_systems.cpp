@@ -8,7 +8,7 @@
 // finish_step: the step as it was before the system kept them) runs in the same program.
 // Sizes up to 512, where every storage's arrays fit 32 KiB and `step` walks forwards, as the
 // loop of one's own does. scripts/benchmark-small-systems.sh runs it and writes the table of
-// docs/performance.md ("Small systems at a fixed step").
+// docs/results/small-systems.md.
 #include <pointmass/particle_system.hpp>
 
 #include <pointmass/gravity.hpp>

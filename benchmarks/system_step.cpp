@@ -3,7 +3,7 @@
 // plain staggered arrays (the speed of light for this step; once forwards every step, once
 // with the system's alternating traversal), a read-modify-write bandwidth
 // loop over as many bytes, and a loop of scalar Particles (one object per particle).
-// scripts/benchmark-system.sh runs it and turns the medians into docs/performance.md's table.
+// scripts/benchmark-system.sh runs it and turns the medians into docs/results/system.md.
 // Counters: items_per_second = particle-steps per second.
 #include <pointmass/parallel.hpp>
 
@@ -77,7 +77,7 @@ void BM_System(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
-// Particles at rest (docs/performance.md, "Particles at rest"): the sparks of BM_System once
+// Particles at rest (docs/results/subnormal.md): the sparks of BM_System once
 // damping has taken their x and z velocities into the subnormal range, where they stay (the
 // damped value rounds back to itself). The velocities are put there at once rather than by
 // the 51,000 steps of 1/60 s that damping 0.9 per second takes from 10 m/s in float (in

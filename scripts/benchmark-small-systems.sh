@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSL-1.0
-# Regenerates the "Small systems at a fixed step" table of docs/performance.md: builds
+# Regenerates docs/results/small-systems.md (small systems at a fixed step): builds
 # benchmarks/small_systems.cpp with -O3 -march=native (Release), runs it with interleaved
 # repetitions, and writes the medians (ns a step) of `step`, which keeps the damping factors
 # of the last step length, and of the same step computing them every time, measured in the
-# same run, between the small-systems markers.
+# same run, into docs/results/small-systems.md between the small-systems markers.
 # Usage: scripts/benchmark-small-systems.sh [repetitions]
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -20,8 +20,7 @@ median_table "$json" "$repetitions" >"$table" <<'PY'
 print(f"Machine: {processor}, {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz; medians of "
       f"{sys.argv[2]} interleaved repetitions (`scripts/benchmark-small-systems.sh {sys.argv[2]}`), "
       "ns a step of 1/60 s: `step`, and in brackets the same step computing its damping factors "
-      "every time (`begin_step`, `step_range` over `step_parameters`, `finish_step`) and its "
-      "time over `step`'s.\n")
+      "every time, and its time over `step`'s.\n")
 sizes = ("16", "64", "256", "512")
 print("| system | " + " | ".join(f"{int(n):,} particles" for n in sizes) + " |")
 print("|---|" + "---|" * len(sizes))
@@ -36,5 +35,4 @@ for label, system in (("`ParticleSystem<float>` (PerSecond + Euler, sparks)", "F
         cells.append(f"{kept:.1f} ({afresh:.1f}, {afresh / kept:.2f})")
     print(f"| {label} | " + " | ".join(cells) + " |")
 PY
-cat "$table"
-replace_between_markers "$POINTMASS_ROOT/docs/performance.md" small-systems "$table"
+publish_table "$POINTMASS_ROOT/docs/results/small-systems.md" small-systems "$table"

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSL-1.0
-# Regenerates the "Particles at rest" table of docs/performance.md: builds
+# Regenerates docs/results/subnormal.md (particles at rest: subnormal velocities): builds
 # benchmarks/system_step.cpp with -O3 -march=native (Release), runs the sparks' step with
 # normal velocities, with x and z velocities in the subnormal range, and the same under
 # FlushDenormals, with interleaved repetitions, and writes the medians (M particle-steps/s)
-# and each row's time against the normal velocities', measured in the same run, between the
-# subnormal markers.
+# and each row's time against the normal velocities', measured in the same run, into
+# docs/results/subnormal.md between the subnormal markers.
 # Usage: scripts/benchmark-subnormal.sh [repetitions]
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -40,4 +40,4 @@ for label, name in rows:
             cells += [f"{v:,.0f}", f"{normal / v:.2f}"] if v and normal else ["", ""]
     print(f"| {label} | " + " | ".join(cells) + " |")
 PY
-publish_table "$POINTMASS_ROOT/docs/performance.md" subnormal "$table"
+publish_table "$POINTMASS_ROOT/docs/results/subnormal.md" subnormal "$table"

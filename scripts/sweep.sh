@@ -3,8 +3,9 @@
 # Work-precision diagrams (time to simulate a scene's span against error), for every
 # compile-time variant (float and double with every policy pair; float arithmetic with
 # double or compensated positions with PerSecond + Euler and Exact + Exact): regenerates the
-# plots docs/images/pareto-ballistic.svg, pareto-spring.svg and pareto-far.svg and the
-# section of docs/performance.md between <!-- sweep:begin --> and <!-- sweep:end -->.
+# plots docs/images/pareto-ballistic.svg, pareto-spring.svg and pareto-far.svg (shown in
+# docs/performance.md) and the tables of docs/results/pareto.md between <!-- sweep:begin -->
+# and <!-- sweep:end -->.
 #
 #   scripts/sweep.sh [repetitions]      (default 5; about 2 minutes on 2 cores)
 #   SWEEP_PNG=/tmp scripts/sweep.sh     also writes PNG copies of the plots there
@@ -23,7 +24,7 @@
 #    accuracy_comparison stops the sweep if the wide positions there lose float's
 #    near-origin error (build/sweep/accuracy-far.txt has the check's table);
 # 4. draws the work-precision diagrams with gnuplot and writes the tables into
-#    docs/performance.md.
+#    docs/results/pareto.md.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 # What the configuration below needs: Boost (the development targets and the examples' Odeint
@@ -34,7 +35,7 @@ repetitions=${1:-5}
 frame_rates=15,30,60,120,240,480
 build="$POINTMASS_ROOT/build/sweep"
 images="$POINTMASS_ROOT/docs/images"
-doc="$POINTMASS_ROOT/docs/performance.md"
+doc="$POINTMASS_ROOT/docs/results/pareto.md"
 grep -q '<!-- sweep:begin -->' "$doc" && grep -q '<!-- sweep:end -->' "$doc" ||
   { echo "$doc has no <!-- sweep:begin --> ... <!-- sweep:end --> markers" >&2; exit 1; }
 
@@ -217,7 +218,7 @@ titles = {"ballistic": "Ballistic shots (`pareto-ballistic.svg`)",
           "spring": "Mass on a spring (`pareto-spring.svg`)",
           "far": "Ballistic shots 1e6 m from the origin (`pareto-far.svg`)"}
 for scene in scenes:
-    out.append(f"#### Pareto front: {titles[scene]}\n")
+    out.append(f"## Pareto front: {titles[scene]}\n")
     out.append("Numbered as in the diagram, most accurate first; the front is taken on the time "
                "to simulate the span.\n")
     out.append("| # | variant | frame time (s) | error (m) | ns per step | µs for the span "
@@ -231,7 +232,7 @@ for scene in scenes:
                    f"{float(r['us_per_span']):.3g} | {t / base(scene, r['variant']):.1f} |")
     out.append("")
 
-out.append("#### Error at each frame time (m, largest over the scene)\n")
+out.append("## Error at each frame time (m, largest over the scene)\n")
 out.append("The far scene's rows are the policy pairs swept with wide positions (every pair is "
            "in its plot and in `build/sweep/pareto-far.csv`).\n")
 rates = sorted({frame(r) for r in rows["ballistic"]}, key=lambda s: int(s[2:]))
@@ -249,7 +250,7 @@ for scene in scenes:
                    " | ".join(f"{by_rate[rate]:.1e}" for rate in rates) + " |")
 out.append("")
 
-out.append("#### Time per particle-step (ns) and ratio to the hand-written loop\n")
+out.append("## Time per particle-step (ns) and ratio to the hand-written loop\n")
 out.append("The far scene takes the ballistic column's times. Wide positions are compared "
            "with the float loop (their arithmetic).\n")
 out.append("| variant | `Particle`, ballistic | ratio | `Particle`, spring | ratio | "
@@ -271,7 +272,8 @@ for real in precisions:
         out.append(f"| {variant} | " + " | ".join(cells) + " |")
 out.append("")
 
-# The ratios the advice above ("Which variant for what") quotes, from this run's times.
+# The ratios the advice of docs/performance.md ("Which variant for what") quotes, from this
+# run's times.
 def t(kind, scene, variant):
     return ns[f"{kind}/{scene}/{variant}"]
 def pairs(real):
@@ -280,8 +282,9 @@ def pairs(real):
 def span(values):
     lo, hi = min(values), max(values)
     return f"{lo:.2f}" if f"{lo:.2f}" == f"{hi:.2f}" else f"{lo:.2f} to {hi:.2f}"
-out.append("#### The ratios the advice quotes\n")
-out.append("Each cell divides times of the table above, from this run. The `Particle` rows "
+out.append("## The ratios the advice quotes\n")
+out.append("The ratios [performance.md](../performance.md#which-variant-for-what) quotes: "
+           "each cell divides times of the table above, from this run. The `Particle` rows "
            "take both scenes (the ballistic shots and the spring), the SemiImplicit row every "
            "damping policy too, and the system's row every policy pair: a range is the least "
            "and the greatest of those ratios.\n")

@@ -4,7 +4,7 @@
 // TBB's threads) and the read-modify-write bandwidth of the same six arrays on one and on two
 // threads (the memory bound of a step). Kokkos rows for each host backend this Kokkos has:
 // Serial always, OpenMP (2 threads) where it was built with it.
-// scripts/benchmark-kokkos.sh runs it and writes docs/performance.md's Kokkos table.
+// scripts/benchmark-kokkos.sh runs it and writes the table of docs/results/kokkos.md.
 // Counters: items_per_second = particle-steps per second (real time: threads run).
 #include <pointmass/kokkos.hpp>
 #include <pointmass/parallel.hpp>

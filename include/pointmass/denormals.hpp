@@ -8,7 +8,7 @@
 // after about 2 hours). There it decays to a few hundred times the smallest subnormal and
 // stays (the damped value rounds back to itself), and on many x86 processors every operation
 // on a subnormal takes a microcode assist: the step of a system whose particles have come to
-// rest becomes tens of times slower (docs/performance.md, "Particles at rest", measures it).
+// rest becomes tens of times slower (docs/results/subnormal.md measures it).
 // The values involved are far below anything a game can see, and treating them as zero is
 // what the processor's flush-to-zero (FTZ) and denormals-are-zero (DAZ) modes do.
 //

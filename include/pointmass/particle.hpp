@@ -319,7 +319,7 @@ class BasicParticle {
       // before the call, the velocity damped after it); in both the new length is kept
       // before the call and its factor after, so that nothing but the factor and the undamped
       // velocity is needed after it. Each the fastest of the orders tried with g++ 12 -O3
-      // -march=native in the engine benchmark's changing-step rows (docs/performance.md).
+      // -march=native in the engine benchmark's changing-step rows (docs/results/engine.md).
       cache_.duration = t;
       if constexpr (sizeof(real) == 4) {
         const damping_factors factors = detail::scalar_factors<D>(damping_, duration);

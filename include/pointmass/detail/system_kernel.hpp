@@ -114,7 +114,7 @@ class SystemKernel {
   /// results are the same either way (every particle's step is independent of the others).
   /// Beyond a few times the size of a core's L2 cache, the cached share is too small to
   /// repay the backward walk's weaker hardware prefetch, so larger systems always walk
-  /// forwards. docs/performance.md has the measurements on both sides of the limit.
+  /// forwards. docs/results/system.md has the measurements on both sides of the limit.
   static constexpr std::size_t alternation_limit_bytes = std::size_t{8} << 20;
   /// Arrays that fit in a 32 KiB L1 data cache stay there whichever way a step walks, so
   /// systems this small (1,365 float or 682 double particles with six arrays) always walk

@@ -177,6 +177,7 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
     if constexpr (Layout::per_particle_retention) retention_duration_ = duration;
   }
   // Steps every particle, walking in the direction due; false when there was nothing to do.
+  // A branch picks the walk: through a function pointer it was not inlined, and slower.
   bool walk(R duration) {
     if (!begin_step(duration, "step")) return false;
     const StepParameters parameters = keep_step_parameters(duration);
