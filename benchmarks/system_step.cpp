@@ -292,7 +292,7 @@ BENCHMARK_TEMPLATE(BM_System, WithForces<float>)->Apply(middle);
 BENCHMARK_TEMPLATE(BM_System, WithAcceleration<float>)->Apply(middle);
 BENCHMARK_TEMPLATE(BM_System, WithDamping<float>)->Apply(middle);
 
-// The renderer's hand-off (docs/particle-system.md): copying the positions out, after a step,
+// The renderer's hand-off (docs/results/hand-off.md): copying the positions out, after a step,
 // against the step itself, in the same run. Items: particles copied (or stepped).
 template <class R>
 using Interpolated =
@@ -352,8 +352,8 @@ void BM_CopyInterpolated(benchmark::State& state) {
   BM_CopyOut<R, 3>(state);
 }
 
-// A renderer's hand-off from wide positions (precision.hpp): positions_relative_to a camera
-// near the particles, which are spread over a kilometre 1e6 m out, into {x, y, z} floats;
+// A renderer's hand-off from wide positions (precision.hpp): copy_positions(out, camera), a
+// camera near the particles, which are spread over a kilometre 1e6 m out, into {x, y, z} floats;
 // each offset rounded once (round_via_odd), the cost beside copy_positions' from float.
 template <class S>
 void BM_Relative(benchmark::State& state) {
