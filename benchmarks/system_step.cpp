@@ -292,7 +292,7 @@ BENCHMARK_TEMPLATE(BM_System, WithForces<float>)->Apply(middle);
 BENCHMARK_TEMPLATE(BM_System, WithAcceleration<float>)->Apply(middle);
 BENCHMARK_TEMPLATE(BM_System, WithDamping<float>)->Apply(middle);
 
-// The renderer's hand-off (docs/particle-system.md): copying the positions out, after a step,
+// The renderer's hand-off (docs/results/hand-off.md): copying the positions out, after a step,
 // against the step itself, in the same run. Items: particles copied (or stepped).
 template <class R>
 using Interpolated =

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSL-1.0
-# Regenerates the renderer hand-off table of docs/particle-system.md: builds
+# Regenerates the renderer hand-off table of docs/results/hand-off.md: builds
 # benchmarks/system_step.cpp with -O3 -march=native (Release), runs the step and the copy-out
 # rows with interleaved repetitions, and writes their medians (M particles/s) and the time of
 # each against the lean step's, measured in the same run, between the handoff markers. Builds
-# it with clang as well and runs the lean step, the strided copy and the positions_relative_to
+# it with clang as well and runs the lean step, the strided copy and the camera-relative copy
 # rows there: the loops whose speed depends on the compiler's choices (a loop left scalar, or
 # vectorised with scatter stores), each compiler's rows timed against its own lean step.
 # Usage: scripts/benchmark-handoff.sh [repetitions]
@@ -48,15 +48,15 @@ rows = [("`step`, `ParticleSystem<float>` (lean)", "BM_System<Sparks<float>>"),
         ("`copy_positions` into `{x, y, z}` structs", "BM_CopyVec3<float>"),
         ("`copy_positions`, stride 6 (interleaved vertices)", "BM_CopyStrided<float>"),
         ("`copy_interpolated_positions`, alpha 0.5, `float[3 n]`", "BM_CopyInterpolated<float>"),
-        ("`positions_relative_to` a camera, `Precision<float, double>`, into `Vector3<float>`",
+        ("`copy_positions(out, camera)`, `Precision<float, double>`, into `Vector3<float>`",
          "BM_Relative<Precision<float, double>>"),
-        ("`positions_relative_to` a camera, `Precision<float, Compensated<float>>`",
+        ("`copy_positions(out, camera)`, `Precision<float, Compensated<float>>`",
          "BM_Relative<Precision<float, Compensated<float>>>"),
         ("`step`, lean, clang", "clang:BM_System<Sparks<float>>"),
         ("`copy_positions`, stride 6, clang", "clang:BM_CopyStrided<float>"),
-        ("`positions_relative_to`, `Precision<float, double>`, clang",
+        ("`copy_positions(out, camera)`, `Precision<float, double>`, clang",
          "clang:BM_Relative<Precision<float, double>>"),
-        ("`positions_relative_to`, `Precision<float, Compensated<float>>`, clang",
+        ("`copy_positions(out, camera)`, `Precision<float, Compensated<float>>`, clang",
          "clang:BM_Relative<Precision<float, Compensated<float>>>")]
 for label, name in rows:
     cells = []
@@ -67,4 +67,4 @@ for label, name in rows:
         cells += [f"{v:,.0f}", f"{step / v:.2f}"] if v and step else ["", ""]
     print(f"| {label} | " + " | ".join(cells) + " |")
 PY
-publish_table "$POINTMASS_ROOT/docs/particle-system.md" handoff "$table"
+publish_table "$POINTMASS_ROOT/docs/results/hand-off.md" handoff "$table"

@@ -13,7 +13,7 @@
 // (particle.hpp) on x, y and z (tests/system/ proves it for every policy pair). S is a Real or
 // a Precision<Real, Position> (precision.hpp). Each feature tag (features.hpp) adds what it
 // stores, and what is not chosen is neither stored nor computed. docs/particle-system.md is
-// the user's guide: every public name, with an example.
+// the manual of every public name (tests/system/public_names.txt lists them).
 //
 // Rules in brief. Removal is swap-remove, so an index names a particle until the next kill,
 // kill_if, clear or step with Lifetime; a handle (features::Handles) for as long as it lives.
