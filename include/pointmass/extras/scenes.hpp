@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: BSL-1.0
 // pointmass/extras/scenes.hpp — ready-made scenes (not in the umbrella header: include it
-// explicitly): Cyclone's ballistic shots and a mass on a spring. The tests, examples and
+// explicitly): Cyclone's ballistic shots, a mass on a spring and a rope of springs with a
+// buoy. The tests, examples and
 // benchmarks all use these, so every accuracy and speed figure the project reports is about
 // the same work.
 //
-// Owns: the scenes' data (the shots, the spring, the frame times) and launching a particle
-// of any type with a shot.
+// Owns: the scenes' data (the shots, the spring, the rope, the frame times), launching a
+// particle of any type with a shot, and the rope's energy.
 // Must not include: particle.hpp or anything above it (a scene is data, not a simulation).
 #pragma once
 
 #include <array>
+#include <cmath>
+#include <cstddef>
 #include <string_view>
 #include <type_traits>
 #include <utility>
@@ -83,6 +86,69 @@ struct SpringScene {
   R friction = R(0);                   // N s/m; 0 undamped
   Vector3<R> start{R(1), R(0), R(0)};  // released from rest
   R duration = R(10);                  // seconds: ten periods
+};
+
+/// A rope of springs ending in a buoy, hung from an anchor over water: `count` particles of
+/// `mass` (the last, the buoy, of `buoy_mass`), each joined to the next by a spring of
+/// `link_stiffness` and rest `link_rest` (one generator each way: forces::Spring), the first
+/// tied to `anchor` by a bungee of `bungee_stiffness`, rest `bungee_rest`
+/// (forces::AnchoredBungee), the buoy held up by forces::Buoyancy(buoy_half_height,
+/// buoy_volume, water_height), every particle under gravity g. Released from rest along +x at
+/// the anchor's height, it swings down into the water: a stiff, force-driven scene, and no
+/// damping, so its energy() is constant for the continuous model.
+template <Real R>
+struct RopeScene {
+  static constexpr std::size_t count = 10;
+  R mass = R(0.5);  // kg
+  R buoy_mass = R(1);
+  R link_stiffness = R(200);  // N/m
+  R link_rest = R(0.5);       // m
+  R bungee_stiffness = R(100);
+  R bungee_rest = R(1);
+  Vector3<R> anchor{R(0), R(10), R(0)};
+  R water_height = R(3);
+  R buoy_half_height = R(0.25);
+  R buoy_volume = R(0.002);  // m^3 of water (1000 kg/m^3)
+  R g = R(9.807);
+  R duration = R(60);  // seconds
+
+  [[nodiscard]] constexpr R mass_of(std::size_t i) const noexcept {
+    return i + 1 == count ? buoy_mass : mass;
+  }
+  /// Particle i's starting position (at rest): along +x from the anchor, each link at rest.
+  [[nodiscard]] constexpr Vector3<R> start(std::size_t i) const noexcept {
+    return anchor + Vector3<R>{bungee_rest + link_rest * static_cast<R>(i), R(0), R(0)};
+  }
+  /// The mechanical energy of bodies[0, count) (anything with position() and velocity(), in
+  /// the rope's order): kinetic, gravitational (from y = 0), the links', the bungee's (stretched
+  /// only) and the buoyancy's potential, rho V g times the integral of the submerged fraction
+  /// from y up to the surface plus the half-height.
+  template <class Bodies>
+  [[nodiscard]] R energy(const Bodies& bodies) const {
+    R e = R(0);
+    const auto stretch = [](const Vector3<R>& a, const Vector3<R>& b, R rest) {
+      const Vector3<R> d = a - b;
+      return std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z) - rest;
+    };
+    for (std::size_t i = 0; i < count; ++i) {
+      const Vector3<R> p = bodies[i].position();
+      const Vector3<R> v = bodies[i].velocity();
+      e += mass_of(i) * ((v.x * v.x + v.y * v.y + v.z * v.z) / R(2) + g * p.y);
+      if (i + 1 < count) {
+        const R x = stretch(bodies[i + 1].position(), p, link_rest);
+        e += link_stiffness * x * x / R(2);
+      }
+    }
+    const R bungee = stretch(bodies[0].position(), anchor, bungee_rest);
+    if (bungee > R(0)) e += bungee_stiffness * bungee * bungee / R(2);
+    const R y = bodies[count - 1].position().y;
+    const R top = water_height + buoy_half_height;  // above it, out of the water
+    const R depth = y >= top ? R(0)
+                    : y >= water_height - buoy_half_height
+                        ? (top - y) * (top - y) / (R(4) * buoy_half_height)
+                        : buoy_half_height + (water_height - buoy_half_height - y);
+    return e + R(1000) * buoy_volume * g * depth;
+  }
 };
 
 /// The frame times the accuracy figures use, in seconds.
