@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
-// What a game needs of the batch: bursts and the renderer's copy-out; and that none of it
-// costs a configuration that does not choose it.
+// What a game needs of the batch: bursts; and that none of it costs a configuration that
+// does not choose it.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -41,24 +41,6 @@ TEST_CASE("spawn_burst: count particles from a generator, reserving once") {
   model.set_velocity({1, 2, 3});
   CHECK(sparks.spawn_burst(3, [&](std::size_t) { return model; }) == 3);
   CHECK(sparks.velocity(2) == Vector3<float>{1, 2, 3});
-}
-
-TEST_CASE("copy_positions: packed, strided and into vectors with x, y, z") {
-  ParticleSystem<double> system;
-  for (int n = 0; n < 10; ++n) system.spawn({double(n), n + 0.5, -n - 0.25}, {});
-  struct Vertex {
-    float x, y, z;
-  };
-  std::vector<Vertex> vertices(10);
-  system.copy_positions(std::span<Vertex>(vertices));
-  std::vector<float> strided(9 * 6 + 3, -1.0f);
-  system.copy_positions(std::span<float>(strided), 6);
-  for (std::size_t i = 0; i < 10; ++i) {
-    const Vector3<float> expected{float(i), float(i) + 0.5f, -float(i) - 0.25f};
-    CHECK(Vector3<float>{vertices[i].x, vertices[i].y, vertices[i].z} == expected);
-    CHECK(Vector3<float>{strided[6 * i], strided[6 * i + 1], strided[6 * i + 2]} == expected);
-    if (i < 9) CHECK(strided[6 * i + 3] == -1.0f);
-  }
 }
 
 TEST_CASE("a feature not chosen costs nothing: the configurations' bytes and arrays as before") {
