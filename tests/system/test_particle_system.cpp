@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
 // ParticleSystem (particle_system.hpp): spawn, kill by index and by predicate (swap-remove),
-// capacity and growth, and bad input reported with the argument's name and value.
+// capacity and growth, bad input reported with the argument's name and value, spawn_burst.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -10,6 +10,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -20,6 +21,7 @@
 using namespace pointmass;
 using pointmass::test::random_vector;
 using pointmass::test::same_bits;
+using pointmass::test::SpawnTag;
 
 TEST_CASE_TEMPLATE("spawn, kill by index and by predicate: swap-remove", R, float, double) {
   ParticleSystem<R> system(8);
@@ -114,4 +116,27 @@ TEST_CASE_TEMPLATE("bad input is reported with the argument's name and value", R
 #endif
   CHECK(system.size() == 1);
   CHECK(system.damping() == R(1));
+}
+
+TEST_CASE("spawn_burst: count particles from a generator, reserving once") {
+  using Painted =
+      ParticleSystem<float, damping::None, position::Euler, features::Column<SpawnTag, int>>;
+  Painted system;
+  system.spawn({}, {}, -1);
+  const std::size_t added = system.spawn_burst(1000, [](std::size_t k) {
+    return std::tuple{Vector3<float>{float(k), 0, 0}, Vector3<float>{0, 1, 0}, int(k)};
+  });
+  CHECK(added == 1000);
+  CHECK(system.size() == 1001);
+  CHECK(system.capacity() == 1001);  // one reservation, to the count asked for
+  for (std::size_t i = 1; i < system.size(); ++i) {
+    CHECK(system.column<SpawnTag>(i) == int(i - 1));
+    CHECK(system.position(i).x == float(i - 1));
+  }
+  // A generator of particles, into a system without columns.
+  ParticleSystem<float> sparks;
+  Particle<float> model;
+  model.set_velocity({1, 2, 3});
+  CHECK(sparks.spawn_burst(3, [&](std::size_t) { return model; }) == 3);
+  CHECK(sparks.velocity(2) == Vector3<float>{1, 2, 3});
 }
