@@ -1,14 +1,12 @@
 // SPDX-License-Identifier: BSL-1.0
 // What each compile-time choice stores and computes, and that a feature not chosen costs
-// nothing; lifetimes, spans, and the staggered block.
+// nothing; spans, and the staggered block.
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <random>
 #include <set>
 #include <span>
 #include <type_traits>
@@ -180,100 +178,6 @@ TEST_CASE_TEMPLATE("arrays share one block, 64-byte aligned, staggered within th
       }
     }
   }
-}
-
-TEST_CASE_TEMPLATE("lifetime: particles age by each step and expire when age reaches lifetime", R,
-                   float, double) {
-  ParticleSystem<R, damping::None, position::Euler, features::Lifetime> system(4);
-  const std::size_t a = system.spawn({}, {});
-  const std::size_t b = system.spawn({R(1), R(0), R(0)}, {});
-  const std::size_t c = system.spawn({R(2), R(0), R(0)}, {});
-  system.set_lifetime(a, R(0.25));
-  system.set_lifetime(b, R(1));
-  CHECK(system.lifetime(c) == real_infinity<R>);
-  system.step(R(0.1));
-  system.step(R(0.1));
-  CHECK(system.size() == 3);
-  CHECK(system.age(0) == R(0.1) + R(0.1));
-  system.step(R(0.1));  // a: age 0.3 >= 0.25
-  REQUIRE(system.size() == 2);
-  std::multiset<R> left{system.position(0).x, system.position(1).x};
-  CHECK(left == std::multiset<R>{R(1), R(2)});
-  for (int i = 0; i < 10; ++i) system.step(R(0.1));  // b: age 1.3
-  REQUIRE(system.size() == 1);
-  CHECK(system.position(0).x == R(2));
-}
-
-TEST_CASE_TEMPLATE("lifetime in a large system: exactly the expired particles go, every step", R,
-                   float, double) {
-  // 1,000 particles (many blocks of 16) with lifetimes (n + 1/2) / 64 s in a shuffled order,
-  // stepped by 1/64 s (exact in binary): after step k, exactly those with n >= k are alive,
-  // each of them once, whatever the order the swap-removes left them in.
-  constexpr std::size_t count = 1000;
-  ParticleSystem<R, damping::None, position::Euler, features::Lifetime> system(count);
-  std::vector<std::size_t> order(count);
-  for (std::size_t n = 0; n < count; ++n) order[n] = n;
-  std::shuffle(order.begin(), order.end(), std::mt19937(42));
-  for (const std::size_t n : order) {
-    const std::size_t i = system.spawn({R(n), R(0), R(0)}, {});  // x names the particle
-    system.set_lifetime(i, (R(n) + R(0.5)) / R(64));
-  }
-  for (std::size_t k = 1; k <= 40; ++k) {
-    system.step(R(1) / R(64));
-    REQUIRE(system.size() == count - k);
-    std::vector<std::size_t> alive;
-    for (std::size_t i = 0; i < system.size(); ++i) {
-      CHECK(system.age(i) < system.lifetime(i));
-      alive.push_back(static_cast<std::size_t>(system.position(i).x));
-    }
-    std::sort(alive.begin(), alive.end());
-    CHECK(alive.front() == k);
-    CHECK(std::adjacent_find(alive.begin(), alive.end()) == alive.end());  // no duplicates
-  }
-}
-
-TEST_CASE_TEMPLATE(
-    "lifetime: the step on which the age equals the lifetime exactly removes the "
-    "particle, and a lifetime one ulp longer lives one step more",
-    R, float, double) {
-  // 40 particles: 32 in whole vector blocks (the block scan), 8 in the rest (one at a time).
-  // Steps of 1/64 s add up exactly, so after step 3 the age is 3/64 s to the last bit. Even
-  // indices live exactly 3/64 s, odd ones the next R above it; x names the particle.
-  constexpr std::size_t count = 40;
-  ParticleSystem<R, damping::None, position::Euler, features::Lifetime> system(count);
-  const R exact = R(3) / R(64);
-  const R longer = std::nextafter(exact, real_infinity<R>);
-  for (std::size_t n = 0; n < count; ++n) {
-    const std::size_t i = system.spawn({R(n), R(0), R(0)}, {});
-    system.set_lifetime(i, n % 2 == 0 ? exact : longer);
-  }
-  const auto expired = [](R age, R lifetime) {
-    return pointmass::detail::SystemAccess::expired<decltype(system)>(age, lifetime);
-  };
-  CHECK(expired(exact, exact));
-  CHECK_FALSE(expired(std::nextafter(exact, R(0)), exact));
-  CHECK_FALSE(expired(real_infinity<R>, real_infinity<R>));  // never, even overflowed
-  const auto alive = [&] {
-    std::vector<std::size_t> names;
-    for (std::size_t i = 0; i < system.size(); ++i) {
-      names.push_back(static_cast<std::size_t>(system.position(i).x));
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-  };
-  system.step(R(1) / R(64));
-  system.step(R(1) / R(64));
-  CHECK(system.size() == count);
-  system.step(R(1) / R(64));
-  REQUIRE(system.size() == count / 2);
-  CHECK(system.age(0) == exact);
-  const std::vector<std::size_t> names = alive();
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    CAPTURE(k);
-    CHECK(names[k] == 2 * k + 1);  // every odd one, and only those
-  }
-  system.step(R(1) / R(64));
-  CHECK(system.empty());
 }
 
 TEST_CASE_TEMPLATE("spans view the live particles and write through", R, float, double) {
