@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
-// User columns (system/columns.hpp): given at spawn or T{}, written by span and index, kept by
-// growth and copies, and following their particle through kills, kill_if and expiry.
+// Columns (system/columns.hpp): spans over the live particles that write through; user columns
+// given at spawn or T{}, written by span and index, kept by growth and copies, and following
+// their particle through kills, kill_if and expiry.
 #include <doctest/doctest.h>
 
 #include <cstddef>
@@ -87,6 +88,30 @@ bool same_as_model(const Recorded& system, const Model& model) {
 }
 
 }  // namespace
+
+TEST_CASE_TEMPLATE("spans view the live particles and write through", R, float, double) {
+  ParticleSystem<R, damping::None, position::Euler, features::ForceAccumulator> system(10);
+  for (int i = 0; i < 3; ++i) system.spawn({R(i), R(2 * i), R(3 * i)}, {});
+  CHECK(system.template column<pointmass::Column::position_y>().size() == 3);
+  CHECK(system.template column<pointmass::Column::position_y>()[2] == R(4));
+  system.template column<pointmass::Column::velocity_x>()[1] = R(10);
+  system.step(R(0.5));
+  CHECK(system.position(1).x == R(1) + R(10) * R(0.5));
+  system.template column<Column::inverse_mass>()[1] = R(0);  // immovable from now on
+  system.step(R(0.5));
+  CHECK(system.position(1).x == R(6));
+  // Read through a const system, each span is its own column.
+  ParticleSystem<R> drawn;
+  drawn.spawn({R(1), R(2), R(3)}, {R(4), R(5), R(6)});
+  const auto& seen = drawn;
+  CHECK(seen.template column<pointmass::Column::position_x>()[0] == R(1));
+  CHECK(seen.template column<pointmass::Column::position_y>()[0] == R(2));
+  CHECK(seen.template column<pointmass::Column::position_z>()[0] == R(3));
+  CHECK(seen.template column<pointmass::Column::velocity_x>()[0] == R(4));
+  CHECK(seen.template column<pointmass::Column::velocity_y>()[0] == R(5));
+  CHECK(seen.template column<pointmass::Column::velocity_z>()[0] == R(6));
+  CHECK(seen.template column<pointmass::Column::velocity_z>().size() == 1);
+}
 
 TEST_CASE("a user column follows its particle through kills, kill_if and expiry (10,000)") {
   std::mt19937 random(15);
