@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
-// Particle: its state, defaults, storage, infinite mass, zero duration and gravity helpers.
+// Particle: its state, defaults, storage, infinite mass, zero duration, forces and the kept
+// damping factors.
 #include <doctest/doctest.h>
 
 #include <limits>
 
-#include <pointmass/extras/scenes.hpp>
 #include <pointmass/pointmass.hpp>
 
 #include "counting_damping.hpp"
@@ -179,36 +179,6 @@ TEST_CASE_TEMPLATE("forces accumulate for one step and act through the inverse m
   p.add_force({R(2), R(0), R(0)});
   p.clear_accumulator();
   CHECK(p.force_accumulator() == Vector3<R>{});
-}
-
-TEST_CASE_TEMPLATE("gravity helpers", R, float, double) {
-  CHECK(gravity<R>() == Vector3<R>{R(0), R(-9.807), R(0)});
-  CHECK(gravity(shooter_gravity<R>) == Vector3<R>{R(0), R(-15), R(0)});
-  CHECK(gravity(driving_gravity<R>) == Vector3<R>{R(0), R(-20), R(0)});
-  CHECK(gravity(R(3.7)) == Vector3<R>{R(0), R(-3.7), R(0)});
-  // f = m g gives the same acceleration for any mass.
-  for (const R mass : {R(0.1), R(2), R(200)}) {
-    Particle<R, damping::None, position::ConstantAcceleration> p;
-    p.set_mass(mass);
-    p.set_acceleration(gravity<R>());
-    p.integrate(R(1));
-    CHECK(p.velocity().y == R(-9.807));
-  }
-}
-
-TEST_CASE("the scenes hold Cyclone's shots") {
-  const auto& shots = scenes::ballistic_shots<double>;
-  REQUIRE(shots.size() == 4);
-  CHECK(shots[0].name == "pistol");
-  CHECK(shots[1].mass == 200.0);
-  CHECK(shots[2].acceleration == Vector3<double>{0, 0.6, 0});
-  CHECK(shots[3].velocity == Vector3<double>{0, 0, 100});
-  Particle<double> p;
-  scenes::launch(p, shots[1]);
-  CHECK(p.position() == Vector3<double>{0, 1.5, 0});
-  CHECK(p.velocity() == Vector3<double>{0, 30, 40});
-  CHECK(p.mass() == 200.0);
-  CHECK(p.damping() == 0.99);
 }
 
 TEST_CASE("a fixed-step loop computes the damping factors once, and again only when needed") {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
-// Shared by the ParticleSystem tests: a reproducible scene of particles, and bit-for-bit
-// comparison of a system against the equivalent scalar Particles.
+// Shared by the ParticleSystem tests: a reproducible scene of particles, bit-for-bit
+// comparison of a system against the equivalent scalar Particles, and a user column's tag.
 #pragma once
 
 #include <doctest/doctest.h>
@@ -35,5 +35,9 @@ bool matches(const System& system, const std::vector<Particle>& particles) {
   }
   return true;
 }
+
+/// The tag of a user column (features::Column<SpawnTag, T>) that holds each particle's spawn
+/// number, by which a test follows the particle through removals.
+struct SpawnTag {};
 
 }  // namespace pointmass::test
