@@ -3,7 +3,7 @@
 // the water) through a ForceRegistry, one registration per spring end, undamped, 60 s at
 // 60 Hz. With the explicit default (Euler) its energy grows without bound, which is why the
 // README says to choose SemiImplicit for forces; with SemiImplicit its error grows slowly: in
-// double within 8% (its largest error grows slowly: 2.5% after 10 s, 7.9% after 60 s), the
+// double within 8% (2.5% after 10 s, 7.9% after 60 s), the
 // bound held here; float drifts further (58% after 60 s) and is not held.
 #include <doctest/doctest.h>
 
