@@ -164,7 +164,7 @@ double relative_error(R hi, R lo, const LogOracle& oracle) {
 }
 
 /// split_log for double, or long double where it is double: hi of half the significand, and
-/// hi + lo within 2^-72 of ln d (exponential.hpp states about 2^-75; lo alone is rounded at
+/// hi + lo within 2^-72 of ln d (logarithm.hpp states about 2^-75; lo alone is rounded at
 /// 2^-79). Every platform, whatever its long double and C library: the logarithm is the
 /// library's own.
 template <class R>
