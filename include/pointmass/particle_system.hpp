@@ -372,8 +372,8 @@ class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D
   /// step does. A bad duration is reported (when checked) and gives an empty view.
   [[nodiscard]] StepView begin_step(R duration) { return begin_view(duration, "begin_step"); }
   /// Ends the step `view` began: removes the particles whose age reached their (finite)
-  /// lifetime. A view of another system, or one whose particles changed after begin_step (a
-  /// spawn, kill or step in between), is a contract violation, reported; nothing is done.
+  /// lifetime. A view of another system, a finished one, or one whose particles were spawned
+  /// or killed after begin_step is a contract violation, reported; nothing is done.
   void finish_step(StepView&& view) {
     typename State::NoCallback none;
     finish(view, none);

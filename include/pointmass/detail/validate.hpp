@@ -285,7 +285,7 @@ constexpr bool check_step_view(const char* function, bool mine, bool unchanged, 
   }
   if (!unchanged) {
     report_scalar(function, "view",
-                  "over the particles begin_step saw (no spawn, kill or step in between)", size);
+                  "over the particles begin_step saw (none spawned or killed since)", size);
     return false;
   }
   return true;
