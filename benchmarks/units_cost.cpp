@@ -57,8 +57,8 @@ void with_units(benchmark::State& state) {
 using pm::damping::Exact;
 using pm::damping::None;
 using pm::damping::PerSecond;
-using pm::position::Euler;
 using pm::position::ConstantAcceleration;
+using pm::position::Euler;
 
 #define POINTMASS_PAIR(name, ...)                                                             \
   BENCHMARK_TEMPLATE(plain, __VA_ARGS__)->Name("plain/" name)->Unit(benchmark::kMicrosecond); \

@@ -51,8 +51,8 @@ constexpr Vector3<R> gravity{R(0), R(-16.5), R(0)};  // -16 once the 0.5 up is a
 // p = p0 + v0 T + a T^2 / 2 and v = v0 + a T, exactly.
 template <class R>
 constexpr bool kinematic_is_exact() {
-  const auto p = shot<R, damping::None, position::ConstantAcceleration>(origin<R>, launch<R>, gravity<R>, R(1),
-                                                             R(1) / R(64), 64);
+  const auto p = shot<R, damping::None, position::ConstantAcceleration>(
+      origin<R>, launch<R>, gravity<R>, R(1), R(1) / R(64), 64);
   return p.position() == Vector3<R>{R(8), R(4 + 16 - 8), R(-2)} &&
          p.velocity() == Vector3<R>{R(8), R(16 - 16), R(-2)};
 }
@@ -130,7 +130,8 @@ constexpr bool default_damping_steps_as_none() {
   }
   return damped.position() == undamped.position() && damped.velocity() == undamped.velocity();
 }
-static_assert(default_damping_steps_as_none<float, damping::PerSecond, position::ConstantAcceleration>());
+static_assert(
+    default_damping_steps_as_none<float, damping::PerSecond, position::ConstantAcceleration>());
 static_assert(default_damping_steps_as_none<double, damping::PerSecond, position::Euler>());
 static_assert(default_damping_steps_as_none<float, damping::PerSecond, position::SemiImplicit>());
 static_assert(default_damping_steps_as_none<float, damping::Exact, position::Exact>());
@@ -149,8 +150,8 @@ constexpr Vector3<R> velocity_after_one_step(R damping, R t) {
 }
 static_assert(velocity_after_one_step<float, damping::PerSecond, position::Euler>(0.25f, 0.5f) ==
               Vector3<float>{4.0f, 2.0f, 1.0f});
-static_assert(velocity_after_one_step<double, damping::PerSecond, position::ConstantAcceleration>(0.25, 0.5) ==
-              Vector3<double>{4.0, 2.0, 1.0});
+static_assert(velocity_after_one_step<double, damping::PerSecond, position::ConstantAcceleration>(
+                  0.25, 0.5) == Vector3<double>{4.0, 2.0, 1.0});
 static_assert(velocity_after_one_step<double, damping::PerSecond, position::Euler>(0.5, 2.0) ==
               Vector3<double>{2.0, 1.0, 0.5});
 static_assert(velocity_after_one_step<float, damping::Exact, position::Exact>(0.25f, 0.5f) ==

@@ -12,7 +12,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "AccelerateThenDamp damping, ConstantAcceleration position: Kokkos equals ParticleSystem::step, bit for "
+    "AccelerateThenDamp damping, ConstantAcceleration position: Kokkos equals "
+    "ParticleSystem::step, bit for "
     "bit") {
   test::check_pair<damping::AccelerateThenDamp, position::ConstantAcceleration>();
 }

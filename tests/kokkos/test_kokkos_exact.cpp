@@ -10,7 +10,9 @@ TEST_CASE("Exact damping, Euler position: Kokkos equals ParticleSystem::step, bi
   test::check_pair<damping::Exact, position::Euler>();
 }
 
-TEST_CASE("Exact damping, ConstantAcceleration position: Kokkos equals ParticleSystem::step, bit for bit") {
+TEST_CASE(
+    "Exact damping, ConstantAcceleration position: Kokkos equals ParticleSystem::step, bit for "
+    "bit") {
   test::check_pair<damping::Exact, position::ConstantAcceleration>();
 }
 

@@ -10,7 +10,9 @@ TEST_CASE("None damping, Euler position: Kokkos equals ParticleSystem::step, bit
   test::check_pair<damping::None, position::Euler>();
 }
 
-TEST_CASE("None damping, ConstantAcceleration position: Kokkos equals ParticleSystem::step, bit for bit") {
+TEST_CASE(
+    "None damping, ConstantAcceleration position: Kokkos equals ParticleSystem::step, bit for "
+    "bit") {
   test::check_pair<damping::None, position::ConstantAcceleration>();
 }
 

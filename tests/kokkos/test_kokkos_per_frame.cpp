@@ -10,7 +10,9 @@ TEST_CASE("PerFrame damping, Euler position: Kokkos equals ParticleSystem::step,
   test::check_pair<damping::PerFrame, position::Euler>();
 }
 
-TEST_CASE("PerFrame damping, ConstantAcceleration position: Kokkos equals ParticleSystem::step, bit for bit") {
+TEST_CASE(
+    "PerFrame damping, ConstantAcceleration position: Kokkos equals ParticleSystem::step, bit for "
+    "bit") {
   test::check_pair<damping::PerFrame, position::ConstantAcceleration>();
 }
 

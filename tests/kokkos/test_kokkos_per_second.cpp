@@ -11,7 +11,8 @@ TEST_CASE("PerSecond damping, Euler position: Kokkos equals ParticleSystem::step
 }
 
 TEST_CASE(
-    "PerSecond damping, ConstantAcceleration position: Kokkos equals ParticleSystem::step, bit for bit") {
+    "PerSecond damping, ConstantAcceleration position: Kokkos equals ParticleSystem::step, bit for "
+    "bit") {
   test::check_pair<damping::PerSecond, position::ConstantAcceleration>();
 }
 

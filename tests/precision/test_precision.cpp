@@ -61,12 +61,11 @@ static_assert(
 static_assert(pm::ParticleSystem<float>::storage_bytes_per_particle == 24);
 static_assert(pm::ParticleSystem<DoublePositions>::storage_bytes_per_particle == 36);
 static_assert(pm::ParticleSystem<CompensatedPositions>::storage_bytes_per_particle == 36);
-static_assert(pm::detail::SystemAccess::Layout<pm::ParticleSystem<CompensatedPositions>>::array_count ==
-              9);
+static_assert(
+    pm::detail::SystemAccess::Layout<pm::ParticleSystem<CompensatedPositions>>::array_count == 9);
 static_assert(pm::ParticleSystem<CompensatedPositions>::stores<pm::Column::position_error_x>);
 static_assert(!pm::ParticleSystem<DoublePositions>::stores<pm::Column::position_error_x>);
-static_assert(
-    std::is_same_v<pm::ParticleSystem<DoublePositions>::position_element, double>);
+static_assert(std::is_same_v<pm::ParticleSystem<DoublePositions>::position_element, double>);
 // The particle with Compensated<float> stores 3 floats more than the float one; with double
 // positions 3 doubles instead of 3 floats.
 static_assert(sizeof(pm::Particle<CompensatedPositions, pm::damping::None>) ==
@@ -179,9 +178,10 @@ Result fly(const Launch& launch) {
     const Vector3<Wide> p_variant = widen(variant.position());
     // All-float rounds the position at each addition that involves p0 (two for the forms
     // with an a t^2 term): half an ulp each, per component.
-    const int additions =
-        std::is_same_v<P, pm::position::ConstantAcceleration> || std::is_same_v<P, pm::position::Exact> ? 2
-                                                                                             : 1;
+    const int additions = std::is_same_v<P, pm::position::ConstantAcceleration> ||
+                                  std::is_same_v<P, pm::position::Exact>
+                              ? 2
+                              : 1;
     result.float_rounding += std::sqrt(3.0) * additions * float_ulp(largest(p_plain)) / 2;
     // The variant's own: double rounds p0 + d (half a double ulp); the pair rounds d + lo
     // (half a float ulp of |d| + |lo|, |lo| at most half a float ulp of p).
@@ -606,7 +606,8 @@ TEST_CASE_TEMPLATE("render-relative: the exact offset rounded once to float, aga
     const Vector3<double> camera{o, -o, 0};
     const Vector3<float> got = particle.position_relative_to(camera);
     system.set_position(0, particle.position());
-    Vector3<float> batch[1];  // copy_positions(out, origin): the branch-free rounding (round_via_odd)
+    Vector3<float>
+        batch[1];  // copy_positions(out, origin): the branch-free rounding (round_via_odd)
     system.copy_positions(batch, camera);
     if (!same_bits(got, Vector3<float>{oracle, -oracle, 0}) ||
         !same_bits(system.position_relative_to(0, camera), got) || !same_bits(batch[0], got)) {
@@ -689,8 +690,7 @@ TEST_CASE("render-relative: a particle and the system agree, and a short buffer 
 
   std::vector<Vector3<float>> short_buffer(1, Vector3<float>{7.0f, 7.0f, 7.0f});
   CHECK_THROWS_WITH_AS(system.copy_positions(short_buffer, camera),
-                       doctest::Contains("copy_positions: argument 'out'"),
-                       std::invalid_argument);
+                       doctest::Contains("copy_positions: argument 'out'"), std::invalid_argument);
   CHECK(same_bits(short_buffer[0], Vector3<float>{7.0f, 7.0f, 7.0f}));
 }
 
@@ -737,15 +737,17 @@ TEST_CASE("render-relative: an origin read from the buffer being written is the 
 
 TEST_CASE(
     "spawn(particle) copies a compensated position's error term: the system goes on bit for bit") {
-  pm::Particle<CompensatedPositions, pm::damping::PerSecond, pm::position::ConstantAcceleration> particle;
+  pm::Particle<CompensatedPositions, pm::damping::PerSecond, pm::position::ConstantAcceleration>
+      particle;
   particle.set_position({3.0e6, -1.0e6, 5.0e5});
   particle.set_velocity({123.0f, 45.0f, -67.0f});
   particle.set_acceleration(pm::gravity<float>());
   particle.set_damping(0.8f);
   for (int k = 0; k < 1000; ++k) particle.integrate(1.0f / 60.0f);
   REQUIRE(particle.stored_position_error().x != 0.0f);  // lo carries something by now
-  pm::ParticleSystem<CompensatedPositions, pm::damping::PerSecond, pm::position::ConstantAcceleration> system(
-      1);
+  pm::ParticleSystem<CompensatedPositions, pm::damping::PerSecond,
+                     pm::position::ConstantAcceleration>
+      system(1);
   system.set_acceleration(pm::gravity<float>());
   system.set_damping(0.8f);
   system.spawn(particle);

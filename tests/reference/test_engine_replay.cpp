@@ -25,8 +25,8 @@ bool same_bits(const Vector3<R>& ours, const reference_engine::Vector3<R>& their
 
 }  // namespace
 
-TEST_CASE_TEMPLATE("the listing's policy replays Cyclone's particles bit for bit", R,
-                   float, double) {
+TEST_CASE_TEMPLATE("the listing's policy replays Cyclone's particles bit for bit", R, float,
+                   double) {
   using Ported = Particle<R, damping::AccelerateThenDamp, position::Euler>;
   constexpr int count = 6;
   const R dampings[count] = {R(1), R(0.99), R(0.995), R(0.5), R(0.05), R(0.999)};

@@ -290,9 +290,8 @@ TEST_CASE_TEMPLATE("a long run: 10^6 steps of the undamped spring, semi-implicit
   CHECK(low >= (1 - r / 2) / (1 + r / 2) - slack);
 }
 
-TEST_CASE_TEMPLATE(
-    "a long run: 10^6 steps of the defaults settle at their terminal velocity", R, float,
-    double) {
+TEST_CASE_TEMPLATE("a long run: 10^6 steps of the defaults settle at their terminal velocity", R,
+                   float, double) {
   // The fireball rises against per-second damping 0.9: v* = a h / (1 - d^h), the fixed point
   // of v d^h + a h.
   Scene s = ballistic_scenes()[2];

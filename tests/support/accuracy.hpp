@@ -119,7 +119,8 @@ constexpr const char* damping_name() {
 template <class P>
 constexpr const char* position_name() {
   if constexpr (std::is_same_v<P, position::Euler>) return "Euler";
-  else if constexpr (std::is_same_v<P, position::ConstantAcceleration>) return "ConstantAcceleration";
+  else if constexpr (std::is_same_v<P, position::ConstantAcceleration>)
+    return "ConstantAcceleration";
   else if constexpr (std::is_same_v<P, position::SemiImplicit>) return "SemiImplicit";
   else return "Exact";
 }

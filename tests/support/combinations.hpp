@@ -21,9 +21,9 @@ struct Combination {
 };
 
 template <class R, class D>
-using WithEveryPosition =
-    std::tuple<Combination<R, D, position::Euler>, Combination<R, D, position::ConstantAcceleration>,
-               Combination<R, D, position::SemiImplicit>>;
+using WithEveryPosition = std::tuple<Combination<R, D, position::Euler>,
+                                     Combination<R, D, position::ConstantAcceleration>,
+                                     Combination<R, D, position::SemiImplicit>>;
 
 template <class... Tuples>
 using Concat = decltype(std::tuple_cat(std::declval<Tuples>()...));

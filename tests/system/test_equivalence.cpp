@@ -34,7 +34,8 @@ struct Config {
 
 template <class R>
 using AllPairs = std::tuple<
-    Config<R, damping::None, position::Euler>, Config<R, damping::None, position::ConstantAcceleration>,
+    Config<R, damping::None, position::Euler>,
+    Config<R, damping::None, position::ConstantAcceleration>,
     Config<R, damping::None, position::SemiImplicit>, Config<R, damping::None, position::Exact>,
     Config<R, damping::PerFrame, position::Euler>,
     Config<R, damping::PerFrame, position::ConstantAcceleration>,
@@ -45,7 +46,8 @@ using AllPairs = std::tuple<
     Config<R, damping::AccelerateThenDamp, position::Euler>,
     Config<R, damping::AccelerateThenDamp, position::ConstantAcceleration>,
     Config<R, damping::AccelerateThenDamp, position::SemiImplicit>,
-    Config<R, damping::Exact, position::Euler>, Config<R, damping::Exact, position::ConstantAcceleration>,
+    Config<R, damping::Exact, position::Euler>,
+    Config<R, damping::Exact, position::ConstantAcceleration>,
     Config<R, damping::Exact, position::SemiImplicit>, Config<R, damping::Exact, position::Exact>>;
 
 template <class... A, class... B>
@@ -295,8 +297,8 @@ TEST_CASE_TEMPLATE(
     "per-particle d^t kept across steps of one length: set_damping, spawn, kill, a new length, "
     "a copy and a loop of one's own all stay the Particles' bit for bit",
     S, ParticleSystem<float, damping::PerSecond, position::Euler, features::PerParticleDamping>,
-    ParticleSystem<double, damping::PerSecond, position::ConstantAcceleration, features::PerParticleDamping,
-                   features::ForceAccumulator>,
+    ParticleSystem<double, damping::PerSecond, position::ConstantAcceleration,
+                   features::PerParticleDamping, features::ForceAccumulator>,
     ParticleSystem<float, damping::AccelerateThenDamp, position::Euler,
                    features::PerParticleDamping, features::PerParticleAcceleration>) {
   using R = typename S::real;

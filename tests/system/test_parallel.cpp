@@ -25,7 +25,8 @@ using pointmass::test::same_bits;
 
 TEST_CASE_TEMPLATE("a parallel step equals the serial step", S, float, double,
                    Precision<float, double>, Precision<float, Compensated<float>>) {
-  using System = ParticleSystem<S, damping::PerSecond, position::ConstantAcceleration, features::Lifetime>;
+  using System =
+      ParticleSystem<S, damping::PerSecond, position::ConstantAcceleration, features::Lifetime>;
   using R = typename System::real;
   using Value = typename System::position_value;
   constexpr std::size_t count = 100'003;  // 7 chunks, the last partial

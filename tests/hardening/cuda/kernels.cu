@@ -50,7 +50,8 @@ template <class R>
 void instantiate_all(Particle<R>* any) {
   launch_particles(reinterpret_cast<Particle<R, damping::None, position::Euler>*>(any), 1);
   launch_particles(reinterpret_cast<Particle<R, damping::None, position::Exact>*>(any), 1);
-  launch_particles(reinterpret_cast<Particle<R, damping::PerFrame, position::ConstantAcceleration>*>(any), 1);
+  launch_particles(
+      reinterpret_cast<Particle<R, damping::PerFrame, position::ConstantAcceleration>*>(any), 1);
   launch_particles(reinterpret_cast<Particle<R, damping::PerSecond, position::Euler>*>(any), 1);
   launch_particles(
       reinterpret_cast<Particle<R, damping::AccelerateThenDamp, position::SemiImplicit>*>(any), 1);

@@ -5,7 +5,8 @@
 #include <cstdio>
 
 int main() {
-  pointmass::Particle<double, pointmass::damping::None, pointmass::position::ConstantAcceleration> ball;
+  pointmass::Particle<double, pointmass::damping::None, pointmass::position::ConstantAcceleration>
+      ball;
   ball.set_position({0, 10, 0});
   ball.set_acceleration(pointmass::gravity<double>());
   for (int i = 0; i < 60; ++i) ball.integrate(1.0 / 60);

@@ -7,7 +7,9 @@
 
 int main() {
   namespace si = boost::units::si;
-  pointmass::units::Particle<double, pointmass::damping::None, pointmass::position::ConstantAcceleration> ball;
+  pointmass::units::Particle<double, pointmass::damping::None,
+                             pointmass::position::ConstantAcceleration>
+      ball;
   ball.set_position(pointmass::Vector3<double>{0, 10, 0} * si::meters);
   ball.set_acceleration(pointmass::units::gravity<double>());
   for (int i = 0; i < 60; ++i) ball.integrate((1.0 / 60) * si::seconds);

@@ -51,7 +51,10 @@ static_assert(!std::is_convertible_v<Eigen::Vector3d, pm::Vector3<float>>);
 // Not every type is a vector: the conversions are there only for types with traits.
 static_assert(!std::is_convertible_v<float, pm::Vector3<float>>);
 static_assert(!std::is_convertible_v<pm::Vector3<float>, bool>);
-static_assert(!std::is_convertible_v<pm::Vector3<float>, pm::Vector3<double>>);
+// Between the library's own precisions, the same rule as for a user's vectors: exact widening
+// is implicit, rounding is explicit.
+static_assert(std::is_convertible_v<pm::Vector3<float>, pm::Vector3<double>>);
+static_assert(!std::is_convertible_v<pm::Vector3<double>, pm::Vector3<float>>);
 static_assert(!std::is_convertible_v<Eigen::Vector2f, pm::Vector3<float>>);
 
 // A conversion copies three numbers and nothing more: it runs at compile time, and the types
