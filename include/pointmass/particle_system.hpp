@@ -240,7 +240,7 @@ class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D
       if constexpr (std::is_convertible_v<decltype(made), const particle_type&>) {
         return spawn(static_cast<const particle_type&>(made));
       } else {
-        return std::apply([this](const auto&... arguments) { return spawn(arguments...); }, made);
+        return std::apply([&](const auto&... arguments) { return spawn(arguments...); }, made);
       }
     });
   }
