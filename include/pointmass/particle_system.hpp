@@ -85,6 +85,7 @@ class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D
   using damping_state = typename D::template State<R>;
   using State::acceleration_;
   using State::damping_;
+  using State::expired;  // for SystemAccess: clang 14 refuses State::expired from a friend
   using State::load;
   using State::removing_;
   using State::store;

@@ -48,31 +48,24 @@ TEST_CASE_TEMPLATE("generators on a ParticleSystem match Particle, through apply
     forces::apply(drag, direct, dt);
     forces::apply(buoyancy, direct, dt);
     forces::apply(gravity, direct, dt);
-    forces::SoaBodies<R> soa{wrapped.template column<pointmass::Column::position_x>(),
-                             wrapped.template column<pointmass::Column::position_y>(),
-                             wrapped.template column<pointmass::Column::position_z>(),
-                             wrapped.template column<pointmass::Column::velocity_x>(),
-                             wrapped.template column<pointmass::Column::velocity_y>(),
-                             wrapped.template column<pointmass::Column::velocity_z>(),
-                             wrapped.template column<pointmass::Column::inverse_mass>(),
-                             wrapped.template column<pointmass::Column::force_x>(),
-                             wrapped.template column<pointmass::Column::force_y>(),
-                             wrapped.template column<pointmass::Column::force_z>()};
+    // The adapter over wrapped's columns, made afresh for each use.
+    const auto adapter = [&] {
+      return forces::SoaBodies<R>{wrapped.template column<pointmass::Column::position_x>(),
+                                  wrapped.template column<pointmass::Column::position_y>(),
+                                  wrapped.template column<pointmass::Column::position_z>(),
+                                  wrapped.template column<pointmass::Column::velocity_x>(),
+                                  wrapped.template column<pointmass::Column::velocity_y>(),
+                                  wrapped.template column<pointmass::Column::velocity_z>(),
+                                  wrapped.template column<pointmass::Column::inverse_mass>(),
+                                  wrapped.template column<pointmass::Column::force_x>(),
+                                  wrapped.template column<pointmass::Column::force_y>(),
+                                  wrapped.template column<pointmass::Column::force_z>()};
+    };
+    forces::SoaBodies<R> soa = adapter();
     forces::apply(drag, soa, dt);
     forces::apply(buoyancy, soa, dt);
     // A temporary adapter: its forces land in the arrays it refers to.
-    forces::apply(gravity,
-                  forces::SoaBodies<R>{wrapped.template column<pointmass::Column::position_x>(),
-                                       wrapped.template column<pointmass::Column::position_y>(),
-                                       wrapped.template column<pointmass::Column::position_z>(),
-                                       wrapped.template column<pointmass::Column::velocity_x>(),
-                                       wrapped.template column<pointmass::Column::velocity_y>(),
-                                       wrapped.template column<pointmass::Column::velocity_z>(),
-                                       wrapped.template column<pointmass::Column::inverse_mass>(),
-                                       wrapped.template column<pointmass::Column::force_x>(),
-                                       wrapped.template column<pointmass::Column::force_y>(),
-                                       wrapped.template column<pointmass::Column::force_z>()},
-                  dt);
+    forces::apply(gravity, adapter(), dt);
     for (Body& body : bodies) {
       forces::update_force(drag, body, dt);
       forces::update_force(buoyancy, body, dt);

@@ -46,7 +46,7 @@ struct SystemAccess {
   }
   template <class System, class R>
   static constexpr bool expired(R age, R lifetime) noexcept {
-    return System::State::expired(age, lifetime);
+    return System::expired(age, lifetime);
   }
   template <class System>
   static bool next_step_backward(const System& system) noexcept {

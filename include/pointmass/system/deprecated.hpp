@@ -51,40 +51,46 @@ class SystemDeprecated : public Base {
   static constexpr std::size_t array_count = Layout::array_count;
 
   POINTMASS_DETAIL_RENAMED("column<Column::position_x>()")
-  std::span<position_element> position_x() noexcept { return span<Column::position_x>(); }
+  std::span<position_element> position_x() noexcept {
+    return this->template column<Column::position_x>();
+  }
   POINTMASS_DETAIL_RENAMED("column<Column::position_y>()")
-  std::span<position_element> position_y() noexcept { return span<Column::position_y>(); }
+  std::span<position_element> position_y() noexcept {
+    return this->template column<Column::position_y>();
+  }
   POINTMASS_DETAIL_RENAMED("column<Column::position_z>()")
-  std::span<position_element> position_z() noexcept { return span<Column::position_z>(); }
+  std::span<position_element> position_z() noexcept {
+    return this->template column<Column::position_z>();
+  }
   POINTMASS_DETAIL_RENAMED("column<Column::velocity_x>()")
-  std::span<R> velocity_x() noexcept { return span<Column::velocity_x>(); }
+  std::span<R> velocity_x() noexcept { return this->template column<Column::velocity_x>(); }
   POINTMASS_DETAIL_RENAMED("column<Column::velocity_y>()")
-  std::span<R> velocity_y() noexcept { return span<Column::velocity_y>(); }
+  std::span<R> velocity_y() noexcept { return this->template column<Column::velocity_y>(); }
   POINTMASS_DETAIL_RENAMED("column<Column::velocity_z>()")
-  std::span<R> velocity_z() noexcept { return span<Column::velocity_z>(); }
+  std::span<R> velocity_z() noexcept { return this->template column<Column::velocity_z>(); }
   POINTMASS_DETAIL_RENAMED("column<Column::position_x>()")
   [[nodiscard]] std::span<const position_element> position_x() const noexcept {
-    return span<Column::position_x>();
+    return this->template column<Column::position_x>();
   }
   POINTMASS_DETAIL_RENAMED("column<Column::position_y>()")
   [[nodiscard]] std::span<const position_element> position_y() const noexcept {
-    return span<Column::position_y>();
+    return this->template column<Column::position_y>();
   }
   POINTMASS_DETAIL_RENAMED("column<Column::position_z>()")
   [[nodiscard]] std::span<const position_element> position_z() const noexcept {
-    return span<Column::position_z>();
+    return this->template column<Column::position_z>();
   }
   POINTMASS_DETAIL_RENAMED("column<Column::velocity_x>()")
   [[nodiscard]] std::span<const R> velocity_x() const noexcept {
-    return span<Column::velocity_x>();
+    return this->template column<Column::velocity_x>();
   }
   POINTMASS_DETAIL_RENAMED("column<Column::velocity_y>()")
   [[nodiscard]] std::span<const R> velocity_y() const noexcept {
-    return span<Column::velocity_y>();
+    return this->template column<Column::velocity_y>();
   }
   POINTMASS_DETAIL_RENAMED("column<Column::velocity_z>()")
   [[nodiscard]] std::span<const R> velocity_z() const noexcept {
-    return span<Column::velocity_z>();
+    return this->template column<Column::velocity_z>();
   }
   POINTMASS_DETAIL_RENAMED("copy_positions(buffer, origin)")
   void positions_relative_to(const Vector3<position_value>& origin,
@@ -131,12 +137,6 @@ class SystemDeprecated : public Base {
     return Base::expired(age, lifetime);
   }
 #undef POINTMASS_DETAIL_RENAMED
-
- private:
-  template <Column C>
-  [[nodiscard]] auto span() const noexcept {
-    return std::span{Base::arrays().*(Layout::template entry<C>::member), Base::size()};
-  }
 };
 
 }  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail
