@@ -18,7 +18,7 @@
 // returns, the call that failed its check returns without changing anything.
 //
 // Owns: the version, POINTMASS_HD, the checks settings (POINTMASS_CHECKS, POINTMASS_HOST_CHECKS),
-// the inline namespace keyed by them, and the contract handler.
+// the inline namespace keyed by the exceptions setting, and the contract handler.
 // Must not include: any other pointmass header (every header includes this one).
 #pragma once
 
@@ -57,19 +57,21 @@
 #define POINTMASS_CHECKS 0
 #endif
 
-// The one-definition rule across settings. Functions that check hot-path preconditions are
-// compiled differently with POINTMASS_CHECKS on and off, so the library's declarations live
-// in an inline namespace named after the setting: a translation unit with checks on and one
-// with checks off define different functions (pointmass::checks_on::Particle<...>::integrate
-// and pointmass::checks_off::...), and one program may mix them, each behaving as its own
-// setting says (tests/odr/ proves it). User code names everything pointmass::X, as before;
-// only the contract handler (below) is shared by the whole program. Objects passed between
-// translation units of different settings are of different types: keep one setting per
-// interface.
-#if POINTMASS_CHECKS
-#define POINTMASS_ABI_NAMESPACE checks_on
+// Settings and the one-definition rule.
+//   * POINTMASS_CHECKS changes no type: a translation unit built with checks and one built
+//     without share every pointmass type, so a Release library and a Debug program link.
+//     An inline function compiled both ways is kept once by the linker: a program that
+//     mixes the settings gets one unit's copy of it, checked or not. To be sure of the
+//     checks, give every unit the same setting.
+//   * Exceptions change the types: with them the declarations live in pointmass::v0, without
+//     them (-fno-exceptions) in pointmass::v0_no_exceptions. Each unit then reports a failure
+//     as its own setting says (a throw, or a message and abort()); sharing an object between
+//     the two kinds of unit fails at link time instead of choosing the wrong failure.
+// User code names everything pointmass::X; the contract handler is one for the whole program.
+#if POINTMASS_HAS_EXCEPTIONS
+#define POINTMASS_ABI_NAMESPACE v0
 #else
-#define POINTMASS_ABI_NAMESPACE checks_off
+#define POINTMASS_ABI_NAMESPACE v0_no_exceptions
 #endif
 
 // Whether this compilation pass checks hot-path preconditions: POINTMASS_CHECKS on the host;
@@ -138,6 +140,14 @@ inline std::string describe(const ContractViolation& violation) {
   return message;
 }
 
+// The installed handler: one for the whole program, whatever each translation unit's
+// settings (so it stays outside the inline namespace); null means each unit's default.
+namespace shared_state {
+inline std::atomic<ContractHandler> contract_handler{nullptr};
+}  // namespace shared_state
+
+inline namespace POINTMASS_ABI_NAMESPACE {
+
 /// The default handler: throw std::invalid_argument, or print and abort without exceptions.
 /// Either way it never returns.
 [[noreturn]] inline void default_contract_handler(const ContractViolation& violation) {
@@ -151,19 +161,20 @@ inline std::string describe(const ContractViolation& violation) {
 #endif
 }
 
-// The installed handler: one for the whole program, whatever each translation unit's
-// POINTMASS_CHECKS (so it stays outside the inline namespace below).
-namespace shared_state {
-inline std::atomic<ContractHandler> contract_handler{&default_contract_handler};
-}  // namespace shared_state
+/// The handler a failed check calls.
+inline ContractHandler contract_handler() noexcept {
+  const ContractHandler installed = shared_state::contract_handler.load();
+  return installed != nullptr ? installed : &default_contract_handler;
+}
 
 /// Installs `handler` (nullptr restores the default) and returns the one it replaces.
 inline ContractHandler set_contract_handler(ContractHandler handler) noexcept {
-  return shared_state::contract_handler.exchange(handler != nullptr ? handler
-                                                                    : &default_contract_handler);
+  const ContractHandler previous = shared_state::contract_handler.exchange(
+      handler != &default_contract_handler ? handler : nullptr);
+  return previous != nullptr ? previous : &default_contract_handler;
 }
 
-inline ContractHandler contract_handler() noexcept { return shared_state::contract_handler.load(); }
+}  // namespace POINTMASS_ABI_NAMESPACE
 
 namespace shared_state {
 /// The element a many-valued call is checking on this thread (ContractViolation::within and
