@@ -3,7 +3,8 @@
 #       -DCONSUMER=<consumer project> -DBINARY=<scratch> -P check_consumer_install.cmake
 # Builds and installs the consumer project, which takes pointmass by MODE. The install must
 # hold the consumer's own program (so the install did run) and nothing of pointmass: no
-# headers, no CMake package, no pointmass.pc, no licence file.
+# headers, no CMake package, no pointmass.pc, no licence file; and its configure log must hold
+# no line of pointmass's (the optional parts are looked for only when asked).
 file(REMOVE_RECURSE "${BINARY}")
 execute_process(COMMAND "${CMAKE_COMMAND}" -S "${CONSUMER}" -B "${BINARY}/build" -G "${GENERATOR}"
                         "-DCMAKE_CXX_COMPILER=${COMPILER}" "-DPOINTMASS_CONSUMER_MODE=${MODE}"
@@ -11,6 +12,10 @@ execute_process(COMMAND "${CMAKE_COMMAND}" -S "${CONSUMER}" -B "${BINARY}/build"
                 RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "configuring the consumer failed:\n${output}")
+endif()
+# A subproject's configure says nothing of pointmass's optional parts.
+if(output MATCHES "pointmass:|Kokkos|Boost")
+  message(FATAL_ERROR "the consumer's configure (${MODE}) printed pointmass's lines:\n${output}")
 endif()
 execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BINARY}/build"
                 RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
