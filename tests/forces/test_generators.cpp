@@ -341,3 +341,24 @@ TEST_CASE_TEMPLATE("links add equal and opposite spring forces in a batch", R, f
   CHECK(close(g[1], Vector3<R>{R(0), R(10), R(0)}, R(2)));
   CHECK(g[2] == Vector3<R>{});
 }
+
+TEST_CASE_TEMPLATE("apply_link pulls two single particles with equal and opposite forces", R, float,
+                   double) {
+  // 3 m apart on y, a spring of 10 N/m at rest at 2 m: stretched by 1, 10 N pulling together.
+  Particle<R> top = body_at<R>({R(0), R(0), R(0)});
+  Particle<R> bottom = body_at<R>({R(0), R(-3), R(0)});
+  // What the two registrations Spring needs, one at each end, add.
+  const Vector3<R> on_top = force_on(forces::Spring<Particle<R>>(bottom, R(10), R(2)), top);
+  const Vector3<R> on_bottom = force_on(forces::Spring<Particle<R>>(top, R(10), R(2)), bottom);
+  forces::apply_link(forces::LinkSprings<R>(R(10), R(2)), top, bottom);
+  CHECK(close(top.force_accumulator(), Vector3<R>{R(0), R(-10), R(0)}, R(2)));
+  CHECK(close(bottom.force_accumulator(), Vector3<R>{R(0), R(10), R(0)}, R(2)));
+  CHECK(top.force_accumulator() == on_top);
+  CHECK(bottom.force_accumulator() == on_bottom);
+  // A bungee does not push: 1 m apart, compressed, no force.
+  Particle<R> near = body_at<R>({R(0), R(-1), R(0)});
+  Particle<R> other = body_at<R>({R(0), R(0), R(0)});
+  forces::apply_link(forces::LinkBungees<R>(R(10), R(2)), near, other);
+  CHECK(near.force_accumulator() == Vector3<R>{});
+  CHECK(other.force_accumulator() == Vector3<R>{});
+}

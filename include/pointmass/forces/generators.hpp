@@ -3,8 +3,8 @@
 // springs between bodies, and apply_links for springs between the bodies of a batch.
 //
 // Owns: Gravity, Drag, SpringParameters, AnchoredSpring / AnchoredBungee, Spring / Bungee
-// (between two particles), Buoyancy, LinkSprings / LinkBungees, Link, apply_links, and the
-// spring force they share (detail::spring_force). Each field generator's pure
+// (between two particles), Buoyancy, LinkSprings / LinkBungees, Link, apply_links, apply_link,
+// and the spring force they share (detail::spring_force). Each field generator's pure
 // `force(p, v, inverse_mass, t)` is what `update_force` and `apply` (apply.hpp) call.
 // Must not include: particle.hpp, particle_system.hpp (a spring between particles is a
 // template over the body type), oscillator.hpp or registry.hpp.
@@ -425,6 +425,19 @@ constexpr void apply_links(const BasicLinkSprings<typename B::real, IsBungee>& s
     bodies.add_force(link.second, -f);
   }
 }
+/// One link's spring between two single bodies (two Particles): the force on `first` and its
+/// opposite on `second`, as apply_links does for each link of a batch, and one call where
+/// Spring needs a registration at each end. A force beyond the range of the number type is
+/// reported, as by Spring::update_force, and neither body gets a force.
+template <Real R, bool IsBungee, PlainBody<R> First, PlainBody<R> Second>
+constexpr void apply_link(const BasicLinkSprings<R, IsBungee>& spring, First& first,
+                          Second& second) {
+  const auto f = spring.force_between(first.position(), second.position());
+  if (!pointmass::detail::check_force("forces::apply_link", f)) return;
+  first.add_force(f);
+  second.add_force(-f);
+}
+
 /// A temporary adapter or view (`forces::relative_to(chain, anchor)`): the forces land in the
 /// storage it refers to.
 // clang-format off
