@@ -85,7 +85,6 @@ class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D
   using damping_state = typename D::template State<R>;
   using State::acceleration_;
   using State::damping_;
-  using State::expired;  // for SystemAccess: clang 14 refuses State::expired from a friend
   using State::load;
   using State::removing_;
   using State::store;
@@ -180,6 +179,17 @@ class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D
       damping_ = damping_state(damping);
       State::forget_factors();
     }
+  }
+  /// Without one damping value for all (damping::None, features::PerParticleDamping): a
+  /// sentence that says so, rather than the constraints not met.
+  void set_damping(R) requires(!stores_damping || per_particle_damping_) {
+    static_assert(stores_damping,
+                  "set_damping: this damping policy has no damping value to set (damping::None "
+                  "damps nothing); choose damping::PerSecond, PerFrame, AccelerateThenDamp or "
+                  "Exact to damp");
+    static_assert(!per_particle_damping_,
+                  "set_damping(d): with features::PerParticleDamping each particle has its own "
+                  "damping: set_damping(i, d) sets particle i's");
   }
   [[nodiscard]] R damping() const noexcept requires(!per_particle_damping_) {
     return damping_.value();

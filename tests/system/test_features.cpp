@@ -67,13 +67,13 @@ TEST_CASE_TEMPLATE("each feature stores its arrays, and nothing else", R, float,
   // The accessors of what is not stored do not exist.
   static_assert(!requires(Bare & s) { s.template column<Column::acceleration_x>(); });
   static_assert(requires(Accelerated & s) { s.template column<Column::acceleration_x>(); });
-  static_assert(!requires(Bare & s) { s.set_damping(R(1)); });  // damping::None has none
   static_assert(!requires(Sparks & s) { s.set_damping(std::size_t{0}, R(1)); });
   static_assert(requires(Sparks & s) { s.set_damping(R(1)); });
   static_assert(requires(Damped & s) { s.template column<Column::damping>(); });
   static_assert(!Sparks::template stores<Column::damping> &&
                 Damped::template stores<Column::damping>);
-  static_assert(!requires(Damped & s) { s.set_damping(R(1)); });  // no uniform value either
+  // (set_damping(d) without a uniform value says why it cannot be called: compile-fail tests
+  // system_set_damping_without_damping and system_set_damping_per_particle.)
   static_assert(!requires(Sparks & s) { s.add_force(std::size_t{0}, Vector3<R>{}); });
   static_assert(requires(Forced & s) { s.add_force(std::size_t{0}, Vector3<R>{}); });
   static_assert(!requires(Sparks & s) { s.template column<Column::age>(); });

@@ -183,3 +183,35 @@ TEST_CASE("expiry callback: each expiring particle once, in its final state, chi
   CHECK(seen.size() == 50);
   CHECK(system.size() == 100);  // the children
 }
+
+TEST_CASE("expiry callback that throws: it and those before it are removed, the rest next step") {
+  // 12 particles (ids in a column) expire on the first step, 4 live on. The callback throws on
+  // its third call, as a callback does that kill()s (refused) or fails to allocate.
+  using Shells = ParticleSystem<float, damping::None, position::Euler, features::Lifetime,
+                                features::Column<SpawnTag, int>>;
+  Shells system;
+  for (int id = 0; id < 16; ++id) {
+    system.set_lifetime(system.spawn({float(id), 0, 0}, {}, id), id < 12 ? 0.01f : 100.0f);
+  }
+  std::vector<int> first;
+  struct Thrown {};
+  CHECK_THROWS_AS(system.step(1.0f / 60,
+                              [&](std::size_t i) {
+                                first.push_back(system.column<SpawnTag>(i));
+                                if (first.size() == 3) throw Thrown{};
+                              }),
+                  Thrown);
+  REQUIRE(first.size() == 3);
+  CHECK(system.size() == 13);  // the three reported, the third included, are gone
+  std::set<int> left;
+  for (std::size_t i = 0; i < system.size(); ++i) left.insert(system.column<SpawnTag>(i));
+  for (const int id : first) CHECK(left.count(id) == 0);
+  // The next step reports the nine not reached, each once, and removes them.
+  std::vector<int> second;
+  system.step(1.0f / 60, [&](std::size_t i) { second.push_back(system.column<SpawnTag>(i)); });
+  std::sort(second.begin(), second.end());
+  CHECK(second.size() == 9);
+  CHECK(std::adjacent_find(second.begin(), second.end()) == second.end());
+  for (const int id : second) CHECK((id < 12 && left.count(id) == 1));
+  CHECK(system.size() == 4);
+}

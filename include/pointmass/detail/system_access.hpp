@@ -46,7 +46,7 @@ struct SystemAccess {
   }
   template <class System, class R>
   static constexpr bool expired(R age, R lifetime) noexcept {
-    return System::expired(age, lifetime);
+    return lifetime_expired(age, lifetime);
   }
   template <class System>
   static bool next_step_backward(const System& system) noexcept {
@@ -78,7 +78,7 @@ struct SystemAccess {
   }
   template <class System>
   static void finish_step(System& system, typename System::StepView&& view) {
-    typename System::State::NoCallback none;
+    NoExpiryCallback none;
     finish_step(system, std::move(view), none);
   }
 };

@@ -24,6 +24,18 @@
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
+// A particle of this age and lifetime has expired (an infinite lifetime never does). Branch
+// free, so that the block scan vectorises.
+// The expiry pass without a callback.
+struct NoExpiryCallback {
+  void operator()(std::size_t) const noexcept {}
+};
+
+template <class R>
+POINTMASS_HD constexpr bool lifetime_expired(R age, R lifetime) noexcept {
+  return (age >= lifetime) & (lifetime < real_infinity<R>);
+}
+
 template <class S, DampingPolicy D, class P, class... Features>
 class SystemPasses : public SystemState<S, D, P, Features...> {
   using Base = SystemState<S, D, P, Features...>;
@@ -191,10 +203,7 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
     return true;
   }
 
-  // The expiry pass without a callback.
-  struct NoCallback {
-    void operator()(std::size_t) const noexcept {}
-  };
+  using NoCallback = NoExpiryCallback;
   // Marks the system as inside a removal pass (an expiry callback, kill_if's predicate) while
   // it lives.
   struct PassScope {
@@ -207,9 +216,6 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
     PassScope& operator=(const PassScope&) = delete;
     ~PassScope() { flag = outer; }
   };
-  POINTMASS_HD static constexpr bool expired(R age, R lifetime) noexcept {
-    return (age >= lifetime) & (lifetime < real_infinity<R>);
-  }
   // kill_if's order and result, but a step expires few particles: a block of vector_block
   // particles none of which has expired (a test that vectorises) is skipped whole; only a
   // block with an expiry is walked one particle at a time.
@@ -241,7 +247,7 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
             continue;
           }
         }
-        if (!expired(age[i], lifetime[i])) {
+        if (!lifetime_expired(age[i], lifetime[i])) {
           ++i;
         } else if (!expire_one(i, on_expire)) {
           return;
@@ -250,15 +256,27 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
     }
   }
   // Particle i, expired: on_expire(i), then its removal. False when the callback replaced the
-  // particles whole (assigned, swapped or moved the system): the pass ends there.
+  // particles whole (assigned, swapped or moved the system): the pass ends there. A callback
+  // that throws has been called for i: i is removed all the same (each particle is reported
+  // once), and the expired particles not yet reached wait for the next step.
   template <class OnExpire>
   POINTMASS_DETAIL_ALWAYS_INLINE bool expire_one(std::size_t i, OnExpire& on_expire) {
     if constexpr (!std::is_same_v<std::remove_cvref_t<OnExpire>, NoCallback>) {
       const std::uint16_t replacements = replacements_;
+#if POINTMASS_HAS_EXCEPTIONS
+      try {
+        const PassScope scope(removing_, RemovalPass::expiry);
+        on_expire(std::as_const(i));
+      } catch (...) {
+        if (replacements_ == replacements) remove(i);
+        throw;
+      }
+#else
       {
         const PassScope scope(removing_, RemovalPass::expiry);
         on_expire(std::as_const(i));
       }
+#endif
       // The callback may only spawn (which keeps i).
       if (replacements_ != replacements) return false;
     }

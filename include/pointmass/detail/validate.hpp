@@ -173,28 +173,28 @@ constexpr bool check_representable(const char* function, const char* argument,
   return false;
 }
 
-/// A caller's buffer with room for `needed` elements.
+// "'out' = 2 elements for size() = 3 must be at least size() elements long": a span or buffer
+// of `length` elements where `bound` (named `bound_name`) are needed.
+[[gnu::cold]] [[gnu::noinline]] inline void report_length(
+    const char* function, const char* argument, const char* requirement, std::size_t length,
+    const char* bound_name, std::size_t bound) {
+  ContractViolation violation{
+      function, argument, requirement, {static_cast<long double>(length), 0.0L, 0.0L}, 1, {}};
+  std::size_t used = 0;
+  append_number(violation.text, used, length);
+  append_text(violation.text, used, " elements for ");
+  append_text(violation.text, used, bound_name);
+  append_text(violation.text, used, " = ");
+  append_number(violation.text, used, bound);
+  report(violation, used);
+}
+
+/// A caller's buffer with room for `needed` (the system's size()) elements.
 constexpr bool check_buffer(const char* function, const char* argument, std::size_t size,
                             std::size_t needed) {
   if (size >= needed) return true;
-  report_scalar(function, argument, ">= size() elements (its size is given)", size);
+  report_length(function, argument, "at least size() elements long", size, "size()", needed);
   return false;
-}
-
-[[gnu::cold]] [[gnu::noinline]] inline void report_span(const char* function, const char* argument,
-                                                        std::size_t span_size, std::size_t size) {
-  ContractViolation violation{function,
-                              argument,
-                              "at least size() elements long (size() is the length of the "
-                              "forces)",
-                              {static_cast<long double>(span_size), 0.0L, 0.0L},
-                              1,
-                              {}};
-  std::size_t used = 0;
-  append_number(violation.text, used, span_size);
-  append_text(violation.text, used, " elements for size() = ");
-  append_number(violation.text, used, size);
-  report(violation, used);
 }
 
 /// A span of a batch adapter (forces::SpanBodies, SoaBodies) with an element for each of the
@@ -202,7 +202,9 @@ constexpr bool check_buffer(const char* function, const char* argument, std::siz
 constexpr bool check_span(const char* function, const char* argument, std::size_t span_size,
                           std::size_t size) {
   if (span_size >= size) return true;
-  report_span(function, argument, span_size, size);
+  report_length(function, argument,
+                "at least size() elements long (size() is the length of the forces)", span_size,
+                "size()", size);
   return false;
 }
 
@@ -232,9 +234,8 @@ constexpr bool check_at_least(const char* function, const char* argument, I valu
 constexpr bool check_strided_buffer(const char* function, std::size_t available,
                                     std::size_t needed) {
   if (available >= needed) return true;
-  report_scalar(function, "out",
-                "a buffer of at least (size() - 1) * stride + 3 elements (its size is given)",
-                available);
+  report_length(function, "out", "at least that many elements long", available,
+                "(size() - 1) * stride + 3", needed);
   return false;
 }
 
@@ -250,11 +251,11 @@ constexpr bool check_not_removing(const char* function, RemovalPass pass, std::s
   if (pass == RemovalPass::none) return true;
   report_scalar(function, "index",
                 pass == RemovalPass::expiry
-                    ? "not removed during an expiry callback (spawn there; kill after the step)"
+                    ? "removed after the expiry callback returns (spawn there; kill after the "
+                      "step)"
                 : pass == RemovalPass::burst
-                    ? "not removed during spawn_burst's generator (kill after spawn_burst "
-                      "returns)"
-                    : "not removed during kill_if's predicate (return true to remove the "
+                    ? "removed after spawn_burst's generator returns"
+                    : "removed after kill_if's predicate returns (or return true to remove the "
                       "particle it is asked about)",
                 index);
   return false;
@@ -266,12 +267,9 @@ constexpr bool check_not_stepping(const char* function, const char* argument, Re
                                   T value) {
   if (pass == RemovalPass::none) return true;
   report_scalar(function, argument,
-                pass == RemovalPass::expiry
-                    ? "not stepped during an expiry callback (step after the step returns)"
-                : pass == RemovalPass::burst
-                    ? "not stepped during spawn_burst's generator (step after spawn_burst "
-                      "returns)"
-                    : "not stepped during kill_if's predicate (step after kill_if returns)",
+                pass == RemovalPass::expiry  ? "stepped after the expiry callback returns"
+                : pass == RemovalPass::burst ? "stepped after spawn_burst's generator returns"
+                                             : "stepped after kill_if's predicate returns",
                 value);
   return false;
 }
