@@ -180,16 +180,11 @@ class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D
       State::forget_factors();
     }
   }
-  /// Without one damping value for all (damping::None, features::PerParticleDamping): a
-  /// sentence that says so, rather than the constraints not met.
+  /// Without one damping value for all: a sentence, rather than the constraints not met.
   void set_damping(R) requires(!stores_damping || per_particle_damping_) {
-    static_assert(stores_damping,
-                  "set_damping: this damping policy has no damping value to set (damping::None "
-                  "damps nothing); choose damping::PerSecond, PerFrame, AccelerateThenDamp or "
-                  "Exact to damp");
-    static_assert(!per_particle_damping_,
-                  "set_damping(d): with features::PerParticleDamping each particle has its own "
-                  "damping: set_damping(i, d) sets particle i's");
+    static_assert(stores_damping && !per_particle_damping_,
+                  "set_damping(d): no damping for all particles (damping::None damps nothing; "
+                  "with features::PerParticleDamping, set_damping(i, d))");
   }
   [[nodiscard]] R damping() const noexcept requires(!per_particle_damping_) {
     return damping_.value();

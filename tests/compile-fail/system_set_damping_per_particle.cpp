@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
 // With per-particle damping there is no damping for all: set_damping(d) says so, in a sentence.
-// expected-error: with features::PerParticleDamping each particle has its own damping
+// expected-error: with features::PerParticleDamping, set_damping(i, d)
 #include <pointmass/particle_system.hpp>
 
 int main() {

@@ -2,10 +2,9 @@
 // pointmass/forces/generators.hpp — the force generators over a body's own state, the
 // springs between bodies, and apply_links for springs between the bodies of a batch.
 //
-// Owns: Gravity, Drag, SpringParameters, AnchoredSpring / AnchoredBungee, Spring / Bungee
-// (between two particles), Buoyancy, LinkSprings / LinkBungees, Link, apply_links, apply_link,
-// and the spring force they share (detail::spring_force). Each field generator's pure
-// `force(p, v, inverse_mass, t)` is what `update_force` and `apply` (apply.hpp) call.
+// Owns: Gravity, Drag, SpringParameters, AnchoredSpring / AnchoredBungee, Spring / Bungee,
+// Buoyancy, LinkSprings / LinkBungees, Link, apply_links, apply_link, detail::spring_force.
+// Each field generator's `force(p, v, inverse_mass, t)` is what update_force and apply call.
 // Must not include: particle.hpp, particle_system.hpp (a spring between particles is a
 // template over the body type), oscillator.hpp or registry.hpp.
 #pragma once
@@ -425,10 +424,8 @@ constexpr void apply_links(const BasicLinkSprings<typename B::real, IsBungee>& s
     bodies.add_force(link.second, -f);
   }
 }
-/// One link's spring between two single bodies (two Particles): the force on `first` and its
-/// opposite on `second`, as apply_links does for each link of a batch, and one call where
-/// Spring needs a registration at each end. A force beyond the range of the number type is
-/// reported, as by Spring::update_force, and neither body gets a force.
+/// A spring between two single bodies: the force on `first`, its opposite on `second` (where
+/// Spring needs a registration at each end); a force beyond R's range is reported, none added.
 template <Real R, bool IsBungee, PlainBody<R> First, PlainBody<R> Second>
 constexpr void apply_link(const BasicLinkSprings<R, IsBungee>& spring, First& first,
                           Second& second) {
