@@ -40,7 +40,7 @@ struct Interpolation {};
 /// died. Stores the particle's slot (a std::uint32_t) per particle, plus a table of slots
 /// (slot -> index and generation) beside the block. A slot's generation counts its deaths in
 /// G; a slot whose generation reaches the largest G is retired (never reused), so an old
-/// handle can never answer for a newer particle (std::uint32_t: after 4,294,967,294 lives).
+/// handle can never answer for a newer particle (std::uint32_t: after 4,294,967,295 lives).
 template <class G>
 struct BasicHandles {
   static_assert(std::is_unsigned_v<G> && !std::is_same_v<G, bool>,

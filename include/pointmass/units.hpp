@@ -141,11 +141,13 @@ namespace detail {
 template <class T>
 struct QuantityParts {
   using unit = void;
+  using dimension = void;
   using real = T;
 };
 template <class Unit, class Y>
 struct QuantityParts<bu::quantity<Unit, Y>> {
   using unit = Unit;
+  using dimension = typename Unit::dimension_type;
   using real = Y;
 };
 template <class Given, class Expected>
@@ -154,6 +156,18 @@ inline constexpr bool same_unit_v =
 template <class Given, class Expected>
 inline constexpr bool same_real_v =
     std::is_same_v<typename QuantityParts<Given>::real, typename QuantityParts<Expected>::real>;
+/// A quantity of the expected dimension and Real in another unit (milliseconds, kilometres):
+/// converted to the expected SI quantity, as Boost.Units converts explicitly.
+template <class Given, class Expected>
+inline constexpr bool other_unit_v =
+    !std::is_void_v<typename QuantityParts<Given>::dimension> &&
+    std::is_same_v<typename QuantityParts<Given>::dimension,
+                   typename QuantityParts<Expected>::dimension> &&
+    same_real_v<Given, Expected>;
+template <class Expected, class T>
+constexpr Vector3<Expected> in_unit_of(const Vector3<T>& v) {
+  return {Expected(v.x), Expected(v.y), Expected(v.z)};
+}
 /// False, but only once T is known: for a static_assert in a function that must fail when used.
 template <class T>
 inline constexpr bool always_false_v = false;
@@ -166,7 +180,7 @@ inline constexpr bool always_false_v = false;
 // the function, the quantity it expects and its unit. It also catches a scalar quantity of
 // another Real, which Boost.Units would otherwise convert implicitly from float to double.
 #define POINTMASS_UNITS_REJECT(function, Expected, given, what)                                \
-  static_assert(detail::same_unit_v<given, Expected>,                                          \
+  static_assert(detail::same_unit_v<given, Expected> || detail::other_unit_v<given, Expected>, \
                 #function ": wrong dimension: the argument must be " what);                    \
   static_assert(!detail::same_unit_v<given, Expected> || detail::same_real_v<given, Expected>, \
                 #function                                                                      \
@@ -228,46 +242,64 @@ class Particle : public BasicParticle<SiQuantities<canonical_precision_t<S>>, D,
                   "pointmass::Vector3<double>{5, 0, 0} * si::newtons");
   }
 
-  // The overloads below are chosen only for an argument of the wrong type; each fails with
-  // a static_assert naming what was expected.
+  // The overloads below are chosen for an argument of another type: a quantity of the right
+  // dimension in another unit is converted to SI; anything else fails with a static_assert
+  // naming what was expected.
   template <class T>
     requires(!std::is_same_v<T, position_type>)
-  void set_position(const Vector3<T>&) {
+  void set_position(const Vector3<T>& position) {
     POINTMASS_UNITS_REJECT(set_position, position_type, T,
                            "a Vector3 of units::length<Real> (metres)");
+    if constexpr (detail::other_unit_v<T, position_type>) {
+      Base::set_position(detail::in_unit_of<position_type>(position));
+    }
   }
   template <class T>
     requires(!std::is_same_v<T, velocity_type>)
-  void set_velocity(const Vector3<T>&) {
+  void set_velocity(const Vector3<T>& velocity) {
     POINTMASS_UNITS_REJECT(set_velocity, velocity_type, T,
                            "a Vector3 of units::velocity<Real> (metres per second)");
+    if constexpr (detail::other_unit_v<T, velocity_type>) {
+      Base::set_velocity(detail::in_unit_of<velocity_type>(velocity));
+    }
   }
   template <class T>
     requires(!std::is_same_v<T, acceleration_type>)
-  void set_acceleration(const Vector3<T>&) {
+  void set_acceleration(const Vector3<T>& acceleration) {
     POINTMASS_UNITS_REJECT(set_acceleration, acceleration_type, T,
                            "a Vector3 of units::acceleration<Real> (metres per second squared)");
+    if constexpr (detail::other_unit_v<T, acceleration_type>) {
+      Base::set_acceleration(detail::in_unit_of<acceleration_type>(acceleration));
+    }
   }
   template <class T>
     requires(!std::is_same_v<T, force_type>)
-  void add_force(const Vector3<T>&) {
+  void add_force(const Vector3<T>& force) {
     POINTMASS_UNITS_REJECT(add_force, force_type, T, "a Vector3 of units::force<Real> (newtons)");
+    if constexpr (detail::other_unit_v<T, force_type>) {
+      Base::add_force(detail::in_unit_of<force_type>(force));
+    }
   }
   template <class T>
     requires(!std::is_same_v<T, mass_type>)
-  void set_mass(const T&) {
+  void set_mass(const T& mass) {
     POINTMASS_UNITS_REJECT(set_mass, mass_type, T, "a units::mass<Real> (kilograms)");
+    if constexpr (detail::other_unit_v<T, mass_type>) Base::set_mass(mass_type(mass));
   }
   template <class T>
     requires(!std::is_same_v<T, inverse_mass_type>)
-  void set_inverse_mass(const T&) {
+  void set_inverse_mass(const T& inverse_mass) {
     POINTMASS_UNITS_REJECT(set_inverse_mass, inverse_mass_type, T,
                            "a units::inverse_mass<Real> (per kilogram)");
+    if constexpr (detail::other_unit_v<T, inverse_mass_type>) {
+      Base::set_inverse_mass(inverse_mass_type(inverse_mass));
+    }
   }
   template <class T>
     requires(!std::is_same_v<T, time_type>)
-  void integrate(const T&) {
+  void integrate(const T& duration) {
     POINTMASS_UNITS_REJECT(integrate, time_type, T, "a units::time<Real> (seconds)");
+    if constexpr (detail::other_unit_v<T, time_type>) Base::integrate(time_type(duration));
   }
 };
 

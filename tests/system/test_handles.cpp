@@ -152,7 +152,7 @@ TEST_CASE("handles: a handle from a system with more slots answers for nothing")
 }
 
 TEST_CASE("handles: a slot's generation wraps by retiring the slot, old handles stay dead") {
-  // 8-bit generations: a slot serves generations 0 .. 254, then is retired.
+  // 8-bit generations: a slot serves generations 0 .. 254, 255 lives, then is retired.
   using Small =
       ParticleSystem<float, damping::None, position::Euler, features::BasicHandles<std::uint8_t>>;
   Small system;
@@ -174,5 +174,9 @@ TEST_CASE("handles: a slot's generation wraps by retiring the slot, old handles 
   unsigned largest = 0;
   for (const Small::Handle& h : old) largest = std::max(largest, unsigned{h.generation});
   CHECK(largest == 254);
+  // The slot the first life took served 255 lives (the number the docs give), then retired.
+  const auto lives = std::count_if(old.begin(), old.end(),
+                                   [&](const Small::Handle& h) { return h.slot == old[0].slot; });
+  CHECK(lives == 255);
   CHECK(system.find(bystander) == std::size_t{0});
 }

@@ -15,6 +15,8 @@
 #include <pointmass/particle.hpp>
 #include <pointmass/units.hpp>
 
+#include <boost/units/systems/si/prefixes.hpp>
+
 #include "tolerance.hpp"
 
 namespace pm = pointmass;
@@ -193,4 +195,31 @@ TEST_CASE_TEMPLATE("the SI particle costs no storage and stays trivially copyabl
   static_assert(pm::units::Particle<R, PerSecond>::stores_damping);
   static_assert(requires(pm::units::Particle<R, PerSecond> p) { p.set_damping(R(1)); });
   CHECK(sizeof(pm::units::Particle<R, None>) < sizeof(pm::units::Particle<R, PerSecond>));
+}
+
+TEST_CASE_TEMPLATE("a quantity in another unit of the same dimension is converted to SI", R, float,
+                   double) {
+  // 16 ms, 2 km, 500 g, 3.6 km per second...: each is what SI would have been given.
+  pm::units::Particle<R> milli;
+  pm::units::Particle<R> plain;
+  const auto ms = R(16) * si::milli * si::seconds;
+  const auto seconds = R(16) * R(0.001) * si::seconds;
+  milli.set_position(Vector3<R>{R(1), R(2), R(3)} * (si::kilo * si::meters));
+  plain.set_position(Vector3<R>{R(1000), R(2000), R(3000)} * si::meters);
+  CHECK(milli.position().x.value() == R(1000));
+  CHECK(milli.position().z.value() == R(3000));
+  milli.set_velocity(Vector3<R>{R(0), R(0.01), R(0)} * (si::kilo * si::meters_per_second));
+  plain.set_velocity(Vector3<R>{R(0), R(10), R(0)} * si::meters_per_second);
+  milli.set_mass(R(500) * si::milli * si::kilograms);
+  plain.set_mass(R(0.5) * si::kilograms);
+  milli.add_force(Vector3<R>{R(1), R(0), R(0)} * (si::kilo * si::newtons));
+  plain.add_force(Vector3<R>{R(1000), R(0), R(0)} * si::newtons);
+  milli.integrate(ms);
+  plain.integrate(seconds);
+  const auto numbers = [](const auto& v) {
+    return Vector3<R>{v.x.value(), v.y.value(), v.z.value()};
+  };
+  CHECK(pm::test::close(numbers(milli.position()), numbers(plain.position()), R(8)));
+  CHECK(pm::test::close(numbers(milli.velocity()), numbers(plain.velocity()), R(8)));
+  CHECK(milli.velocity().x.value() > R(0));  // the force acted, in kilonewtons on 500 g
 }

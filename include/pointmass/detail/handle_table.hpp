@@ -12,7 +12,8 @@
 // the same, so a handle goes dead with its particle and stays dead when the slot is reused.
 // A slot whose generation reaches the largest G is retired: never put on the free list
 // again, so no generation is ever issued twice for the same slot (with std::uint32_t after
-// 4,294,967,294 lives of one slot; each retired slot keeps its 8 bytes in the table).
+// 4,294,967,295 lives of one slot, generations 0 to 2^32 - 2; a retired slot keeps its 8
+// bytes in the table).
 //
 // Must not include: particle.hpp, particle_system.hpp (storage knows no physics).
 #pragma once
