@@ -162,3 +162,52 @@ TEST_CASE_TEMPLATE(
     CHECK(same_bits(gradual_system.velocity(i), gradual[i].velocity()));
   }
 }
+
+namespace {
+// A step of a subnormal length under FlushDenormals, which reads it as zero: a Particle and a
+// ParticleSystem of the pair D, P both leave every particle as it was.
+template <class R, class D, class P>
+void subnormal_step_changes_nothing() {
+  using Vector = pointmass::Vector3<R>;
+  volatile R tiny = std::numeric_limits<R>::min();
+  const R subnormal = tiny / R(1024);  // computed before the guard: a subnormal
+  pointmass::Particle<R, D, P> particle;
+  pointmass::ParticleSystem<R, D, P> system;
+  particle.set_velocity(Vector{R(1), R(2), R(3)});
+  particle.set_acceleration(Vector{R(0), R(-10), R(0)});
+  system.set_acceleration(Vector{R(0), R(-10), R(0)});
+  if constexpr (pointmass::Particle<R, D, P>::stores_damping) {
+    particle.set_damping(R(0.5));
+    system.set_damping(R(0.5));
+  }
+  system.spawn(particle.position(), particle.velocity());
+  {
+    FlushDenormals flush;
+    particle.integrate(subnormal);
+    particle.integrate(subnormal);
+    system.step(subnormal);
+    system.step(subnormal);
+  }
+  CHECK(same_bits(particle.velocity(), Vector{R(1), R(2), R(3)}));
+  CHECK(same_bits(particle.position(), Vector{}));
+  CHECK(same_bits(system.velocity(0), particle.velocity()));
+  CHECK(same_bits(system.position(0), particle.position()));
+}
+}  // namespace
+
+TEST_CASE_TEMPLATE(
+    "FlushDenormals: a step of subnormal length changes nothing, in a Particle as in a "
+    "ParticleSystem, for every policy pair" *
+        doctest::skip(!FlushDenormals::supported),
+    R, float, double) {
+  if (!FlushDenormals::supported) return;  // (only run with --no-skip)
+  namespace damping = pointmass::damping;
+  namespace position = pointmass::position;
+  subnormal_step_changes_nothing<R, damping::None, position::Euler>();
+  subnormal_step_changes_nothing<R, damping::PerFrame, position::Euler>();
+  subnormal_step_changes_nothing<R, damping::PerSecond, position::Euler>();
+  subnormal_step_changes_nothing<R, damping::AccelerateThenDamp, position::Euler>();
+  subnormal_step_changes_nothing<R, damping::PerSecond, position::SemiImplicit>();
+  subnormal_step_changes_nothing<R, damping::PerFrame, position::ConstantAcceleration>();
+  subnormal_step_changes_nothing<R, damping::Exact, position::Exact>();
+}

@@ -306,7 +306,9 @@ class BasicParticle {
   /// keeps none): 0 <= duration, finite.
   POINTMASS_HD constexpr void integrate_new_length(const time_type& duration) {
     const real t = Q::raw(duration);
-    if (detail::is_zero(t)) return;        // nothing changes, the accumulated force waits
+    // Nothing changes, the accumulated force waits. A comparison, as ParticleSystem's step
+    // makes: where the mode reads denormals as zero (FlushDenormals), a subnormal t is zero.
+    if (real_equal(t, real(0))) return;
     if (detail::is_zero(inverse_mass_)) {  // immovable: forces cannot move it
       force_accumulator_ = {};
       return;
