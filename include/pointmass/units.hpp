@@ -159,11 +159,10 @@ inline constexpr bool same_real_v =
 /// A quantity of the expected dimension and Real in another unit (milliseconds, kilometres):
 /// converted to the expected SI quantity, as Boost.Units converts explicitly.
 template <class Given, class Expected>
-inline constexpr bool other_unit_v =
-    !std::is_void_v<typename QuantityParts<Given>::dimension> &&
-    std::is_same_v<typename QuantityParts<Given>::dimension,
-                   typename QuantityParts<Expected>::dimension> &&
-    same_real_v<Given, Expected>;
+inline constexpr bool other_unit_v = !std::is_void_v<typename QuantityParts<Given>::dimension> &&
+                                     std::is_same_v<typename QuantityParts<Given>::dimension,
+                                                    typename QuantityParts<Expected>::dimension> &&
+                                     same_real_v<Given, Expected>;
 template <class Expected, class T>
 constexpr Vector3<Expected> in_unit_of(const Vector3<T>& v) {
   return {Expected(v.x), Expected(v.y), Expected(v.z)};

@@ -1067,3 +1067,33 @@ TEST_CASE_TEMPLATE("units face: a Precision particle of SI quantities steps as t
   CHECK(same_bits(typed.position_relative_to(Vector3<double>{1e7, 0, -5e6} * si::meters),
                   plain.position_relative_to({1e7, 0, -5e6})));
 }
+
+TEST_CASE_TEMPLATE("copy_positions rounds a compensated hi + lo to the buffer's type once", R,
+                   float, double) {
+  // hi = 1, lo = half an ulp of 1 and a little more: hi + lo is just above the midpoint between
+  // 1 and the next R, so it rounds up. Rounded first to x87's long double (the value of a
+  // double pair), the little more is lost, and the midpoint then rounds to even: 1.
+  using System = pm::ParticleSystem<pm::Precision<R, pm::Compensated<R>>>;
+  System system;
+  system.spawn({}, {});
+  constexpr R ulp = std::numeric_limits<R>::epsilon();
+  const R lo = ulp / R(2) + ulp * ulp;  // an R: its two bits lie within R's digits
+  system.template column<pm::Column::position_x>()[0] = R(1);
+  system.template column<pm::Column::position_error_x>()[0] = lo;
+  const R up = R(1) + ulp;  // hi + lo rounded to R once
+  std::vector<R> packed(3, R(-1));
+  system.copy_positions(std::span<R>(packed));
+  CHECK(same_bits(packed[0], up));
+  std::vector<Vector3<R>> vectors(1);
+  system.copy_positions(std::span<Vector3<R>>(vectors));
+  CHECK(same_bits(vectors[0].x, up));
+  if constexpr (std::is_same_v<R, double>) {
+    // Into float: 1 + 2^-24 + 2^-76 rounds up to the float above 1 (a long double keeps 1 +
+    // 2^-24, the midpoint, which rounds to even).
+    system.template column<pm::Column::position_error_x>()[0] =
+        std::ldexp(1.0, -24) + std::ldexp(1.0, -76);
+    std::vector<float> floats(3, -1.0f);
+    system.copy_positions(std::span<float>(floats));
+    CHECK(same_bits(floats[0], 1.0f + std::numeric_limits<float>::epsilon()));
+  }
+}

@@ -312,8 +312,9 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
 
   // Calls store(i, x, y, z) for particles [first, last) with the position at the fraction
   // alpha of the last step (alpha 1: the current position; without Interpolation always).
-  // The choice of alpha is made once, outside the loop, so 0 and 1 copy bits.
-  template <bool Scattered = false, class Store>
+  // The choice of alpha is made once, outside the loop, so 0 and 1 copy bits. A compensated
+  // position goes to the store as an Out: hi + lo rounded to Out once.
+  template <class Out = position_value, bool Scattered = false, class Store>
   void for_each_output_position(R alpha, std::size_t first, std::size_t last,
                                 Store&& store_one) const {
     using E = typename Layout::position_element;
@@ -321,14 +322,13 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
     bool current = true;
     if constexpr (has_interpolation) current = real_equal(alpha, R(1));
     if (current) {
-      if constexpr (compensated) {  // hi + lo, in the wider type: the store rounds it once
+      if constexpr (compensated) {
         output_loop<Scattered>(
             first, last,
             [&](std::size_t i) {
-              return Vector3<position_value>{
-                  Storage::value_of(a.position_x[i], a.position_error_x[i]),
-                  Storage::value_of(a.position_y[i], a.position_error_y[i]),
-                  Storage::value_of(a.position_z[i], a.position_error_z[i])};
+              return Vector3<Out>{rounded_once<Out>(a.position_x[i], a.position_error_x[i]),
+                                  rounded_once<Out>(a.position_y[i], a.position_error_y[i]),
+                                  rounded_once<Out>(a.position_z[i], a.position_error_z[i])};
             },
             store_one);
       } else {
@@ -366,6 +366,18 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
           store_one);
     }
   }
+  // hi + lo rounded to Out once: one addition in Out where Out holds each part (it rounds the
+  // exact sum), otherwise the offset from 0 (PositionStorage::relative rounds it once).
+  template <class Out>
+  POINTMASS_DETAIL_ALWAYS_INLINE static Out rounded_once(
+      typename Layout::position_element hi, typename Layout::position_element lo) noexcept {
+    if constexpr (std::numeric_limits<Out>::digits >=
+                  std::numeric_limits<typename Layout::position_element>::digits) {
+      return static_cast<Out>(hi) + static_cast<Out>(lo);
+    } else {
+      return Storage::template relative<Out, true>(hi, lo, position_value(0));
+    }
+  }
   template <class T>
   void copy_strided(const char* function, R alpha, std::span<T> out, std::size_t stride) const {
     if (!check_at_least(function, "stride", stride, 3)) return;
@@ -385,15 +397,15 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
     };
     // Packed (x, y, z of one particle after another's): vectorised; any other stride
     // scatters (output_loop).
-    if (stride == 3) for_each_output_position(alpha, 0, size(), store);
-    else for_each_output_position<true>(alpha, 0, size(), store);
+    if (stride == 3) for_each_output_position<T>(alpha, 0, size(), store);
+    else for_each_output_position<T, true>(alpha, 0, size(), store);
   }
   template <class V>
   void copy_vectors(const char* function, R alpha, std::span<V> out) const {
     if (!check_buffer(function, "out", out.size(), size())) return;
     V* data = out.data();
-    for_each_output_position(alpha, 0, size(), [&](std::size_t i, auto x, auto y, auto z) {
-      using T = std::remove_cvref_t<decltype(data[i].x)>;
+    using T = std::remove_cvref_t<decltype(data->x)>;
+    for_each_output_position<T>(alpha, 0, size(), [&](std::size_t i, auto x, auto y, auto z) {
       data[i].x = static_cast<T>(x);
       data[i].y = static_cast<T>(y);
       data[i].z = static_cast<T>(z);
