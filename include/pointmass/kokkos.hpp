@@ -213,11 +213,29 @@ class KokkosSystem {
   /// A copy of `system`'s particles (every stored array) and uniform values in MemorySpace.
   explicit KokkosSystem(const System& system) { copy_from(system); }
   // Not copyable: a copy of the Views would share the arrays with the original while each
-  // kept a particle count of its own. Movable.
+  // kept a particle count of its own. A move takes the allocation and leaves the source
+  // empty, with no arrays: stepping it moves nothing of the new owner's.
   KokkosSystem(const KokkosSystem&) = delete;
   KokkosSystem& operator=(const KokkosSystem&) = delete;
-  KokkosSystem(KokkosSystem&&) noexcept = default;
-  KokkosSystem& operator=(KokkosSystem&&) noexcept = default;
+  KokkosSystem(KokkosSystem&& other) noexcept
+      : block_(std::move(other.block_)),
+        sources_(std::move(other.sources_)),
+        arrays_(other.arrays_),
+        capacity_(other.capacity_),
+        settings_(std::move(other.settings_)) {
+    other.release();
+  }
+  KokkosSystem& operator=(KokkosSystem&& other) noexcept {
+    if (this != &other) {
+      block_ = std::move(other.block_);
+      sources_ = std::move(other.sources_);
+      arrays_ = other.arrays_;
+      capacity_ = other.capacity_;
+      settings_ = std::move(other.settings_);
+      other.release();
+    }
+    return *this;
+  }
   ~KokkosSystem() = default;
 
   std::size_t size() const noexcept { return arrays_.size; }
@@ -393,6 +411,12 @@ class KokkosSystem {
       array = reinterpret_cast<T*>(block_.data() + offset);
       offset += span_bytes(capacity * sizeof(T));
     });
+  }
+  void release() noexcept {
+    block_ = {};
+    sources_ = {};
+    arrays_ = {};
+    capacity_ = 0;
   }
   static std::size_t span_bytes(std::size_t bytes) noexcept {
     return (bytes + Block::page - 1) / Block::page * Block::page + Block::stagger;

@@ -196,3 +196,23 @@ TEST_CASE("a zero duration changes nothing, and a bad one is reported and change
   CHECK(test::same_arrays(back, host));
 #endif
 }
+
+TEST_CASE("a moved-from KokkosSystem is empty: stepping it moves nothing of the new owner's") {
+  const Sparks host = test::make_scene<Sparks>(64, 3);
+  DeviceSystem<Sparks> source(host);
+  DeviceSystem<Sparks> owner(std::move(source));
+  CHECK(source.size() == 0);
+  CHECK(source.capacity() == 0);
+  source.step(Space(), 0.5f);  // nothing to step
+  Sparks back;
+  owner.copy_to(back);
+  CHECK(test::same_arrays(back, host));  // the owner's particles did not move
+  // Move assignment too, into a system that had particles of its own.
+  DeviceSystem<Sparks> assigned(test::make_scene<Sparks>(10, 4));
+  assigned = std::move(owner);
+  CHECK(owner.size() == 0);
+  owner.step(Space(), 0.5f);
+  assigned.copy_to(back);
+  CHECK(test::same_arrays(back, host));
+  CHECK(assigned.size() == 64);
+}
