@@ -197,11 +197,7 @@ class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D
   /// lifetime infinite), user columns as T{}. Non-finite input is reported and nothing is
   /// added (returns npos). Grows the block when full (invalidating spans).
   std::size_t spawn(const Vector3<position_value>& position, const Vector3<R>& velocity) {
-    if (!State::valid_position("spawn", position) ||
-        !detail::check_finite("spawn", "velocity", velocity)) {
-      return npos;
-    }
-    return State::append(position, velocity);
+    return State::valid_spawn(position, velocity) ? State::append(position, velocity) : npos;
   }
   /// Adds a particle with a value for each user column, in the order of the features.
   // clang-format off
@@ -210,11 +206,8 @@ class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D
   std::size_t spawn(const Vector3<position_value>& position, const Vector3<R>& velocity,
                     const Values&... values) {
     // clang-format on
-    const std::size_t i = spawn(position, velocity);
-    if (i != npos) {
-      State::store_user_columns(i, std::make_index_sequence<sizeof...(Values)>{}, values...);
-    }
-    return i;
+    return State::valid_spawn(position, velocity) ? State::append(position, velocity, values...)
+                                                  : npos;
   }
   /// Adds a copy of `particle`: its position and velocity, and whichever of its
   /// acceleration, damping, inverse mass and accumulated force the system stores per

@@ -6,8 +6,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <set>
+#include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include <pointmass/particle_system.hpp>
@@ -185,4 +188,41 @@ TEST_CASE("user columns: given at spawn, T{} otherwise, written by span and inde
   system.kill(red);  // the last (spawn 199) moves into red's index
   CHECK(system.column<SpawnTag>(red) == 199);
   CHECK(system.column<ColourTag>(red).a == 4);
+}
+
+namespace {
+struct FuseTag {};
+// Trivially copyable, with a default constructor that throws while `refuse` is set (as one
+// that allocates, or checks a global, may).
+bool refuse = false;
+struct Fuse {
+  Fuse() : seconds(1.5f) {
+    if (refuse) throw std::runtime_error("no default fuse");
+  }
+  explicit Fuse(float s) : seconds(s) {}
+  float seconds;
+};
+static_assert(std::is_trivially_copyable_v<Fuse>);
+}  // namespace
+
+TEST_CASE("spawn is all or nothing when a user column's default constructor throws") {
+  using Shells = ParticleSystem<float, damping::None, position::Euler, features::Handles,
+                                features::Column<FuseTag, Fuse>>;
+  Shells system;
+  system.spawn({1, 0, 0}, {});
+  const Shells::Handle first = system.handle(0);
+  const Shells before = system;
+  refuse = true;
+  CHECK_THROWS_AS(system.spawn({2, 0, 0}, {}), std::runtime_error);
+  CHECK(system.size() == 1);  // no half-made particle
+  CHECK(system.position(0) == before.position(0));
+  // The failed spawn took no handle slot: the next particle takes slot 1. Given its value, it
+  // makes no T{}, so it spawns while the default constructor still throws.
+  const std::size_t given = system.spawn({3, 0, 0}, {}, Fuse(4.0f));  // no T{} made: no throw
+  refuse = false;
+  REQUIRE(given == 1);
+  CHECK(system.column<FuseTag>(1).seconds == 4.0f);
+  CHECK(system.find(first) == std::optional<std::size_t>(0));
+  CHECK(system.handle(1).slot == 1);
+  CHECK(system.column<FuseTag>(0).seconds == 1.5f);
 }

@@ -205,9 +205,18 @@ class SystemState {
 
   // --- adding and removing -------------------------------------------------------------------
 
+  // A spawn's position and velocity: finite (and within a compensated position's range).
+  static bool valid_spawn(const Vector3<position_value>& position, const Vector3<R>& velocity) {
+    return valid_position("spawn", position) && check_finite("spawn", "velocity", velocity);
+  }
   // Appends a particle (input already validated): position, velocity, a default Particle's
-  // per-particle values, a handle slot, default user columns. Returns its index.
-  std::size_t append(const Vector3<position_value>& position, const Vector3<R>& velocity) {
+  // per-particle values, a handle slot, and the user columns' values (T{} for each when none
+  // are given). Returns its index. All or nothing: the user columns' values are made first
+  // (a constructor may throw), then the room and the slot; storing cannot throw.
+  template <class... Values>
+  std::size_t append(const Vector3<position_value>& position, const Vector3<R>& velocity,
+                     const Values&... values) {
+    const UserValues columns(values...);
     if (size() == capacity()) grow();
     const std::size_t i = size();
     std::uint32_t slot = 0;
@@ -232,7 +241,7 @@ class SystemState {
       a.age[i] = R(0);
       a.lifetime[i] = real_infinity<R>;
     }
-    store_user_columns(i, std::make_index_sequence<user_column_count>{});
+    store_user_columns(i, columns, std::make_index_sequence<user_column_count>{});
     return i;
   }
   // Particle i takes what `particle` has and the system stores per particle: its stored
@@ -264,16 +273,16 @@ class SystemState {
       if (retention_duration_ >= R(0)) Kernel::refresh_retention(arrays(), i, retention_duration_);
     }
   }
-  // The user columns of particle i: the values given, or T{} for each when none are.
-  template <std::size_t... I, class... Values>
-  void store_user_columns(std::size_t i, std::index_sequence<I...>, const Values&... values) {
-    if constexpr (sizeof...(Values) == 0) {
-      ((Layout::template user_pointer<I>(arrays())[i] =
-            typename Layout::template user_element_t<I>{}),
-       ...);
-    } else {
-      ((Layout::template user_pointer<I>(arrays())[i] = values), ...);
-    }
+  // One value for each user column (a tuple: value-initialised, T{}, when none is given).
+  template <std::size_t... I>
+  static auto user_values(std::index_sequence<I...>)
+      -> std::tuple<typename Layout::template user_element_t<I>...>;
+  using UserValues = decltype(user_values(std::make_index_sequence<user_column_count>{}));
+  // The user columns of particle i (trivially copyable: the assignments cannot throw).
+  template <std::size_t... I>
+  void store_user_columns([[maybe_unused]] std::size_t i, [[maybe_unused]] const UserValues& values,
+                          std::index_sequence<I...>) {
+    ((Layout::template user_pointer<I>(arrays())[i] = std::get<I>(values)), ...);
   }
 
   // Swap-remove: the last particle (and its handle slot) moves into `index`.
