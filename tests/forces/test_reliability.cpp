@@ -391,6 +391,60 @@ TEST_CASE_TEMPLATE("registry changed during update_forces: deferred to after the
   }
 }
 
+namespace {
+// A generator owned by the registry it runs in, counting its calls; on its first call it
+// replaces that registry (assigns an empty one, moves it into `elsewhere`, or swaps the two),
+// or, with How::count, only counts.
+template <class Registry>
+struct Replacer {
+  enum class How { count, assign, move_out, swap };
+  using R = typename Registry::real;
+  Registry* registry;
+  Registry* elsewhere;
+  How how;
+  int* calls;
+  void update_force(typename Registry::particle_type& particle, R) {
+    if (++*calls != 1 || how == How::count) return;
+    if (how == How::assign) *registry = Registry{};
+    if (how == How::move_out) *elsewhere = std::move(*registry);
+    if (how == How::swap) std::swap(*registry, *elsewhere);
+    particle.add_force({R(1), R(0), R(0)});  // after the replacement: this generator lives on
+  }
+};
+}  // namespace
+
+TEST_CASE_TEMPLATE("a generator that replaces its registry ends the pass, and later passes work", R,
+                   float, double) {
+  using Registry = forces::ForceRegistry<Particle<R>>;
+  using How = typename Replacer<Registry>::How;
+  for (const How how : {How::assign, How::move_out, How::swap}) {
+    CAPTURE(static_cast<int>(how));
+    Particle<R> particle;
+    Registry registry;
+    Registry elsewhere;
+    int calls[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k) {
+      registry.add_owned(particle, Replacer<Registry>{&registry, &elsewhere,
+                                                      k == 1 ? how : How::count, &calls[k]});
+    }
+    registry.update_forces(R(0.1));  // the second generator replaces the registry
+    CHECK(calls[0] == 1);
+    CHECK(calls[1] == 1);
+    CHECK(calls[2] == 0);  // the pass ended with the replacement
+    CHECK(particle.force_accumulator().x == R(1));
+    CHECK(registry.empty());
+    // Moved or swapped away, the registrations act once a pass where they went (the pass
+    // counter did not go with them: before, it read -1 there and passes skipped generators).
+    const bool moved = how != How::assign;
+    CHECK(elsewhere.size() == (moved ? 3u : 0u));
+    for (int pass = 0; pass < 3; ++pass) elsewhere.update_forces(R(0.1));
+    registry.update_forces(R(0.1));
+    CHECK(calls[0] == (moved ? 4 : 1));
+    CHECK(calls[1] == (moved ? 4 : 1));
+    CHECK(calls[2] == (moved ? 3 : 0));
+  }
+}
+
 TEST_CASE_TEMPLATE("registry accepts const generators", R, float, double) {
   // Before the fix: "invalid static_cast ... to void*" inside the registry.
   forces::ForceRegistry<Particle<R>, forces::Drag<R>> registry;

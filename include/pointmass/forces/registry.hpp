@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <tuple>
 #include <type_traits>
@@ -44,7 +45,9 @@ concept GeneratorFor = requires(G& g, P& p, typename P::real t) {
 /// another, adds a registration, or clears) is safe and deferred: the pass calls exactly the
 /// registrations that existed when it began and are not removed before their turn; one added
 /// during the pass first acts in the next pass; a removed generator the registry owns is
-/// destroyed after the pass.
+/// destroyed after the pass. A generator that replaces the registry (assigns, moves or swaps
+/// it) ends the pass there; the registrations it replaced (their owned generators, the one
+/// running among them) live until the pass ends.
 // clang-format off
 template <class P, class... Known>
   requires(GeneratorFor<Known, P> && ...)
@@ -55,8 +58,25 @@ class ForceRegistry {
   using real = typename P::real;
 
   ForceRegistry() = default;
-  ForceRegistry(ForceRegistry&&) noexcept = default;
-  ForceRegistry& operator=(ForceRegistry&&) noexcept = default;
+  // The registrations move; a pass in progress (passes_) stays with the object it walks.
+  ForceRegistry(ForceRegistry&& other) noexcept
+      : known_(std::move(other.known_)),
+        erased_(std::move(other.erased_)),
+        removed_(std::exchange(other.removed_, 0)) {
+    other.replaced({}, {});
+  }
+  ForceRegistry& operator=(ForceRegistry&& other) noexcept {
+    if (this != &other) {
+      Known_ known = std::move(other.known_);
+      std::vector<ErasedEntry> erased = std::move(other.erased_);
+      const std::size_t removed = std::exchange(other.removed_, 0);
+      other.replaced({}, {});
+      replaced(std::move(known), std::move(erased));
+      removed_ = removed;
+    }
+    return *this;
+  }
+  ~ForceRegistry() = default;
 
   /// Registers a copy of `generator` (or the generator moved in), owned by the registry, to act
   /// on `particle`; returns the registry's generator.
@@ -149,8 +169,13 @@ class ForceRegistry {
     if (!pointmass::detail::check_duration("ForceRegistry::update_forces", duration)) return;
 #endif
     const Pass pass(*this);
-    std::apply([duration](auto&... entries) { (update_all(entries, duration), ...); }, known_);
-    update_all(erased_, duration);
+    const std::uint32_t replacements = replacements_;
+    const auto all = [&](const auto& entries) {
+      return update_all(entries, duration, replacements);
+    };
+    std::apply(
+        [&](const auto&... entries) { static_cast<void>((all(entries) && ...) && all(erased_)); },
+        known_);
   }
 
  private:
@@ -171,6 +196,11 @@ class ForceRegistry {
     Update call;
     std::unique_ptr<void, void (*)(void*)> owned;
     void update(real duration) const { call(generator, *particle, duration); }
+  };
+  using Known_ = std::tuple<std::vector<Entry<Known>>...>;
+  struct Retired {
+    Known_ known;
+    std::vector<ErasedEntry> erased;
   };
 
   template <class G>
@@ -196,12 +226,27 @@ class ForceRegistry {
 
   // Entries called in a pass are those present when it began; an entry removed during the
   // pass is skipped from then on. Indices, not iterators: an add may reallocate the vector.
+  // False when a generator replaced the registry: the pass ends.
   template <class Vec>
-  static void update_all(const Vec& entries, real duration) {
+  bool update_all(const Vec& entries, real duration, std::uint32_t replacements) const {
     const std::size_t count = entries.size();
     for (std::size_t i = 0; i < count; ++i) {
-      if (entries[i].particle != nullptr) entries[i].update(duration);
+      if (entries[i].particle == nullptr) continue;
+      entries[i].update(duration);
+      if (replacements_ != replacements) return false;
     }
+    return true;
+  }
+  // The registrations become `known` and `erased`; inside a pass the old ones are kept until
+  // it ends (the generator running may be one of them).
+  void replaced(Known_ known, std::vector<ErasedEntry> erased) noexcept {
+    if (passes_ > 0) {
+      retired_.push_back({std::move(known_), std::move(erased_)});
+    }
+    known_ = std::move(known);
+    erased_ = std::move(erased);
+    removed_ = 0;
+    ++replacements_;
   }
 
   template <class Vec, class... Match>
@@ -241,6 +286,7 @@ class ForceRegistry {
     ~Pass() {
       --registry_.passes_;
       registry_.compact_unless_updating();
+      if (registry_.passes_ == 0) registry_.retired_.clear();
     }
     Pass(const Pass&) = delete;
     Pass& operator=(const Pass&) = delete;
@@ -249,10 +295,12 @@ class ForceRegistry {
     ForceRegistry& registry_;
   };
 
-  std::tuple<std::vector<Entry<Known>>...> known_;
+  Known_ known_;
   std::vector<ErasedEntry> erased_;
   std::size_t removed_ = 0;
   int passes_ = 0;
+  std::uint32_t replacements_ = 0;  // changed by every move and assignment: a pass ends
+  std::vector<Retired> retired_;    // replaced during a pass, destroyed after it
 };
 
 }  // namespace pointmass::forces
