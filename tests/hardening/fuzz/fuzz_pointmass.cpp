@@ -192,8 +192,13 @@ bool reads_back(const char* first, const char* last, T value) {
   else return parsed == value;
 }
 
+// A buffer's length as a report gives it: "4 elements for size() = 9".
+struct Length {
+  std::size_t elements;
+};
+
 // The handler was called exactly once for (function, argument), and its text reads back as
-// `value` (a number, or "(x, y, z)").
+// `value` (a number, "(x, y, z)", or a Length: the number before " elements for ").
 template <class T>
 void expect_rejected(const char* function, const char* argument, const T& value) {
   require(report.calls == 1, "rejected value not reported once:", function);
@@ -215,6 +220,10 @@ void expect_rejected(const char* function, const char* argument, const T& value)
               "vector value text:", text);
       first = stop + 2;
     }
+  } else if constexpr (std::is_same_v<T, Length>) {
+    const char* stop = std::strstr(text, " elements for ");
+    require(stop != nullptr && reads_back(text, stop, value.elements),
+            "length text does not read back:", text);
   } else {
     require(reads_back(text, end, value), "value text does not read back:", text);
   }
@@ -914,7 +923,7 @@ void check_positions_relative_to(const System& system, const M& mirror, Input& i
   const std::size_t n = system.size();
   if (!finite(origin) || length < n) {
     if (!finite(origin)) expect_rejected("copy_positions", "origin", origin);
-    else expect_rejected("copy_positions", "out", length);
+    else expect_rejected("copy_positions", "out", Length{length});
     for (const auto& b : buffer) require(identical(b, untouched), "a refused hand-off wrote");
     return;
   }
@@ -1168,7 +1177,7 @@ void fuzz_system(Input& in) {
         const bool fits = n == 0 || (length >= 3 && (n == 1 || stride <= (length - 3) / (n - 1)));
         if (stride < 3 || !fits) {
           if (stride < 3) expect_rejected("copy_positions", "stride", stride);
-          else expect_rejected("copy_positions", "out", length);
+          else expect_rejected("copy_positions", "out", Length{length});
           for (const float x : buffer) require(x == 7.0f, "a refused copy-out wrote");
         } else {
           expect_accepted("copy_positions");
