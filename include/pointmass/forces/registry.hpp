@@ -228,7 +228,8 @@ class ForceRegistry {
   // pass is skipped from then on. Indices, not iterators: an add may reallocate the vector.
   // False when a generator replaced the registry: the pass ends.
   template <class Vec>
-  bool update_all(const Vec& entries, real duration, std::uint32_t replacements) const {
+  [[nodiscard]] bool update_all(const Vec& entries, real duration,
+                                std::uint32_t replacements) const {
     const std::size_t count = entries.size();
     for (std::size_t i = 0; i < count; ++i) {
       if (entries[i].particle == nullptr) continue;
