@@ -346,7 +346,7 @@ class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D
   void step(R duration) {
     if constexpr (PositionPolicyFor<P, D>) {  // else the static_assert above has said why
       if (State::walk(duration)) {
-        typename State::NoCallback none;
+        detail::NoExpiryCallback none;
         State::expire(none);
       }
     }
@@ -374,7 +374,7 @@ class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D
   /// lifetime. A view of another system, a finished one, or one whose particles were spawned
   /// or killed after begin_step is a contract violation, reported; nothing is done.
   void finish_step(StepView&& view) {
-    typename State::NoCallback none;
+    detail::NoExpiryCallback none;
     finish(view, none);
   }
   /// finish_step(view) calling on_expire(i) for each expiring particle before its removal.

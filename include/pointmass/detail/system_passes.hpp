@@ -24,13 +24,13 @@
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
-// A particle of this age and lifetime has expired (an infinite lifetime never does). Branch
-// free, so that the block scan vectorises.
 // The expiry pass without a callback.
 struct NoExpiryCallback {
   void operator()(std::size_t) const noexcept {}
 };
 
+// A particle of this age and lifetime has expired (an infinite lifetime never does). Branch
+// free, so that the block scan vectorises.
 template <class R>
 POINTMASS_HD constexpr bool lifetime_expired(R age, R lifetime) noexcept {
   return (age >= lifetime) & (lifetime < real_infinity<R>);
@@ -203,7 +203,11 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
     return true;
   }
 
+  // For the facets, which see only their base's members (system/deprecated.hpp).
   using NoCallback = NoExpiryCallback;
+  POINTMASS_HD static constexpr bool expired(R age, R lifetime) noexcept {
+    return lifetime_expired(age, lifetime);
+  }
   // Marks the system as inside a removal pass (an expiry callback, kill_if's predicate) while
   // it lives.
   struct PassScope {
@@ -261,7 +265,7 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
   // once), and the expired particles not yet reached wait for the next step.
   template <class OnExpire>
   POINTMASS_DETAIL_ALWAYS_INLINE bool expire_one(std::size_t i, OnExpire& on_expire) {
-    if constexpr (!std::is_same_v<std::remove_cvref_t<OnExpire>, NoCallback>) {
+    if constexpr (!std::is_same_v<std::remove_cvref_t<OnExpire>, NoExpiryCallback>) {
       const std::uint16_t replacements = replacements_;
 #if POINTMASS_HAS_EXCEPTIONS
       try {

@@ -134,7 +134,7 @@ class SystemDeprecated : public Base {
   }
   POINTMASS_DETAIL_RENAMED("age >= lifetime (an infinite lifetime never expires)")
   POINTMASS_HD static constexpr bool expired(R age, R lifetime) noexcept {
-    return lifetime_expired(age, lifetime);
+    return Base::expired(age, lifetime);
   }
 #undef POINTMASS_DETAIL_RENAMED
 };
