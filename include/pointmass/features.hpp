@@ -5,8 +5,7 @@
 // and `detail::SystemLayout`, the compile-time table of which arrays a configuration stores,
 // of what element type. Everything that walks the arrays (allocation, copy, swap-remove, the
 // step) is generated from it: adding an array is one line in it (and its name in `Column`).
-// Must not include: particle.hpp, particle_system.hpp or anything that steps (this header is
-// below the storage and the kernel).
+// Must not include: particle.hpp, particle_system.hpp or anything that steps.
 #pragma once
 
 #include <cstddef>
@@ -28,11 +27,11 @@ struct PerParticleDamping {};
 struct PerParticleAcceleration {};
 /// Each particle has an inverse mass and a force accumulator (add_force(i, f)).
 struct ForceAccumulator {};
-/// Each particle has an age and a lifetime; a step removes those whose age reaches it.
+/// Each particle has an age (age + age_error, exact) and a lifetime: a step removes it then.
 struct Lifetime {};
 
 /// Each particle keeps its position before the last step (previous_position_x, y, z), for
-/// drawing between fixed steps: ParticleSystem::interpolated_position(i, alpha).
+/// drawing between steps: ParticleSystem::interpolated_position(i, alpha).
 struct Interpolation {};
 
 /// Stable handles: ParticleSystem::handle(i) names particle i for as long as it lives,
@@ -66,7 +65,6 @@ struct Column {
   using type = T;
 };
 
-/// The former name of ForceAccumulator.
 using Forces [[deprecated("renamed features::ForceAccumulator")]] = ForceAccumulator;
 
 }  // namespace pointmass::features
@@ -97,6 +95,7 @@ enum class Column : unsigned char {
   damping_log_lo,
   damping_retention,  ///< the retention for the last step's length (PerSecond, AccelerateThenDamp)
   age,
+  age_error,  ///< Lifetime only: what the age's rounding dropped (the age is age + age_error)
   lifetime,
   previous_position_x,
   previous_position_y,
@@ -240,6 +239,7 @@ T element_of(T* Class::*);
   X(damping_log_lo, R, per_particle_log_damping)              \
   X(damping_retention, R, per_particle_retention)             \
   X(age, R, has_lifetime)                                     \
+  X(age_error, R, has_lifetime)                               \
   X(lifetime, R, has_lifetime)                                \
   X(previous_position_x, position_element, has_interpolation) \
   X(previous_position_y, position_element, has_interpolation) \

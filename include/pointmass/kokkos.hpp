@@ -127,18 +127,17 @@ void kokkos_step_chunks(const ExecutionSpace& space,
                        KokkosStepChunks<System>{arrays, parameters});
 }
 
-// An age that reached a finite lifetime (ParticleSystem's expiry test).
-template <class R>
-KOKKOS_INLINE_FUNCTION constexpr bool expired_at(R age, R lifetime) {
-  return (age >= lifetime) & (lifetime < real_infinity<R>);
+// ParticleSystem's expiry test (detail::lifetime_expired) on particle i.
+template <class Arrays>
+KOKKOS_INLINE_FUNCTION constexpr bool expired_at(const Arrays& arrays, std::size_t i) {
+  return lifetime_expired(arrays.age[i], arrays.age_error[i], arrays.lifetime[i]);
 }
 
 template <class System>
 struct KokkosCountExpired {
-  const typename System::real* age;
-  const typename System::real* lifetime;
+  typename System::StepView::Arrays arrays;
   KOKKOS_INLINE_FUNCTION void operator()(std::size_t i, std::size_t& count) const {
-    count += expired_at(age[i], lifetime[i]) ? 1 : 0;
+    count += expired_at(arrays, i) ? 1 : 0;
   }
 };
 
@@ -146,13 +145,12 @@ struct KokkosCountExpired {
 // survivor counted from the last particle down.
 template <class System, class IndexView>
 struct KokkosRankSurvivors {
-  const typename System::real* age;
-  const typename System::real* lifetime;
+  typename System::StepView::Arrays arrays;
   std::size_t size;
   IndexView sources;
   KOKKOS_INLINE_FUNCTION void operator()(std::size_t u, std::size_t& rank, bool final) const {
     const std::size_t j = size - 1 - u;
-    if (expired_at(age[j], lifetime[j])) return;
+    if (expired_at(arrays, j)) return;
     if (final) sources(rank) = j;
     ++rank;
   }
@@ -166,7 +164,7 @@ struct KokkosFillHoles {
   typename System::StepView::Arrays arrays;
   IndexView sources;
   KOKKOS_INLINE_FUNCTION void operator()(std::size_t i, std::size_t& rank, bool final) const {
-    if (!expired_at(arrays.age[i], arrays.lifetime[i])) return;
+    if (!expired_at(arrays, i)) return;
     if (final) {
       const std::size_t from = sources(rank);
       Layout::for_each_array(arrays, [&](auto* array) { array[i] = array[from]; });
@@ -357,8 +355,7 @@ class KokkosSystem {
       if (count == 0) return 0;
       std::size_t expired = 0;
       Kokkos::parallel_reduce("pointmass::KokkosSystem::count_expired", policy(space, count),
-                              detail::KokkosCountExpired<System>{arrays_.age, arrays_.lifetime},
-                              expired);
+                              detail::KokkosCountExpired<System>{arrays_}, expired);
       if (expired == 0) return 0;
       const std::size_t kept = count - expired;
       if (kept > 0) {
@@ -370,7 +367,7 @@ class KokkosSystem {
         using Rank = detail::KokkosRankSurvivors<System, IndexView>;
         using Fill = detail::KokkosFillHoles<System, IndexView>;
         Kokkos::parallel_scan("pointmass::KokkosSystem::rank_survivors", policy(space, expired),
-                              Rank{arrays_.age, arrays_.lifetime, count, sources_});
+                              Rank{arrays_, count, sources_});
         Kokkos::parallel_scan("pointmass::KokkosSystem::fill_holes", policy(space, kept),
                               Fill{arrays_, sources_});
       }

@@ -37,7 +37,7 @@ using Recorded = ParticleSystem<double, damping::None, position::Euler, features
 struct Model {
   std::vector<std::uint64_t> spawn;
   std::vector<Particle<double, damping::None, position::Euler>> body;
-  std::vector<double> age, lifetime;
+  std::vector<double> age, age_error, lifetime;  // the age is age + age_error (Kahan's sum)
 
   void add(std::uint64_t id, const Vector3<double>& p, const Vector3<double>& v, double life) {
     spawn.push_back(id);
@@ -46,6 +46,7 @@ struct Model {
     body.back().set_velocity(v);
     body.back().set_acceleration({0, -9.8, 0});
     age.push_back(0);
+    age_error.push_back(0);
     lifetime.push_back(life);
   }
   void remove(std::size_t i) {
@@ -53,10 +54,12 @@ struct Model {
     spawn[i] = spawn[last];
     body[i] = body[last];
     age[i] = age[last];
+    age_error[i] = age_error[last];
     lifetime[i] = lifetime[last];
     spawn.pop_back();
     body.pop_back();
     age.pop_back();
+    age_error.pop_back();
     lifetime.pop_back();
   }
   template <class Predicate>
@@ -73,9 +76,12 @@ struct Model {
   void step(double t) {
     for (std::size_t i = 0; i < spawn.size(); ++i) {
       body[i].integrate(t);
-      age[i] += t;
+      const double step = t + age_error[i];
+      const double sum = age[i] + step;
+      age_error[i] = step - (sum - age[i]);
+      age[i] = sum;
     }
-    remove_if([&](std::size_t i) { return age[i] >= lifetime[i]; });
+    remove_if([&](std::size_t i) { return age[i] + age_error[i] >= lifetime[i]; });
   }
 };
 
@@ -85,7 +91,7 @@ bool same_as_model(const Recorded& system, const Model& model) {
     if (system.column<SpawnTag>(i) != model.spawn[i]) return false;
     if (!same_bits(system.position(i), model.body[i].position())) return false;
     if (!same_bits(system.velocity(i), model.body[i].velocity())) return false;
-    if (!same_bits(system.age(i), model.age[i])) return false;
+    if (!same_bits(system.age(i), model.age[i] + model.age_error[i])) return false;
   }
   return true;
 }

@@ -31,7 +31,7 @@ std::size_t stored_arrays(const System& system) {
       a.position_x, a.position_y,     a.position_z,     a.velocity_x,     a.velocity_y,
       a.velocity_z, a.acceleration_x, a.acceleration_y, a.acceleration_z, a.inverse_mass,
       a.force_x,    a.force_y,        a.force_z,        a.damping,        a.age,
-      a.lifetime};
+      a.age_error,  a.lifetime};
   return static_cast<std::size_t>(
       std::count_if(std::begin(pointers), std::end(pointers), [](const void* p) { return p; }));
 }
@@ -61,8 +61,8 @@ TEST_CASE_TEMPLATE("each feature stores its arrays, and nothing else", R, float,
   static_assert(ExactDamped::storage_bytes_per_particle == 9 * sizeof(R));
   static_assert(Accelerated::storage_bytes_per_particle == 9 * sizeof(R));
   static_assert(Forced::storage_bytes_per_particle == 10 * sizeof(R));
-  static_assert(Aging::storage_bytes_per_particle == 8 * sizeof(R));
-  static_assert(Everything::storage_bytes_per_particle == 19 * sizeof(R));
+  static_assert(Aging::storage_bytes_per_particle == 9 * sizeof(R));  // age as age + error
+  static_assert(Everything::storage_bytes_per_particle == 20 * sizeof(R));
 
   // The accessors of what is not stored do not exist.
   static_assert(!requires(Bare & s) { s.template column<Column::acceleration_x>(); });
@@ -87,8 +87,8 @@ TEST_CASE_TEMPLATE("each feature stores its arrays, and nothing else", R, float,
   CHECK(stored_arrays(Damped(10)) == 7);
   CHECK(stored_arrays(Accelerated(10)) == 9);
   CHECK(stored_arrays(Forced(10)) == 10);
-  CHECK(stored_arrays(Aging(10)) == 8);
-  CHECK(stored_arrays(Everything(10)) == 16);
+  CHECK(stored_arrays(Aging(10)) == 9);
+  CHECK(stored_arrays(Everything(10)) == 17);
   CHECK(pointmass::detail::SystemAccess::arrays(Accelerated(10)).inverse_mass == nullptr);
   CHECK(pointmass::detail::SystemAccess::arrays(Forced(10)).acceleration_x == nullptr);
 }
@@ -142,8 +142,8 @@ TEST_CASE_TEMPLATE("arrays share one block, 64-byte aligned, staggered within th
     ParticleSystem<R> sparks(capacity);
     Everything everything(capacity);
     static_assert(pointmass::detail::SystemAccess::Layout<Everything>::array_count ==
-                  19);  // the damping state in three columns, d^t
-    for (const std::size_t arrays : {std::size_t{6}, std::size_t{19}}) {
+                  20);  // the damping state in three columns, d^t
+    for (const std::size_t arrays : {std::size_t{6}, std::size_t{20}}) {
       CAPTURE(arrays);
       const auto& a = pointmass::detail::SystemAccess::arrays(sparks);
       const auto& b = pointmass::detail::SystemAccess::arrays(everything);
@@ -154,11 +154,11 @@ TEST_CASE_TEMPLATE("arrays share one block, 64-byte aligned, staggered within th
           starts.push_back(reinterpret_cast<std::uintptr_t>(p));
         }
       } else {
-        for (const R* p :
-             {b.position_x, b.position_y, b.position_z, b.velocity_x, b.velocity_y, b.velocity_z,
-              b.acceleration_x, b.acceleration_y, b.acceleration_z, b.inverse_mass, b.force_x,
-              b.force_y, b.force_z, b.damping, b.damping_log_hi, b.damping_log_lo,
-              b.damping_retention, b.age, b.lifetime}) {
+        for (const R* p : {b.position_x,        b.position_y,   b.position_z,     b.velocity_x,
+                           b.velocity_y,        b.velocity_z,   b.acceleration_x, b.acceleration_y,
+                           b.acceleration_z,    b.inverse_mass, b.force_x,        b.force_y,
+                           b.force_z,           b.damping,      b.damping_log_hi, b.damping_log_lo,
+                           b.damping_retention, b.age,          b.age_error,      b.lifetime}) {
           starts.push_back(reinterpret_cast<std::uintptr_t>(p));
         }
       }
@@ -300,17 +300,17 @@ TEST_CASE_TEMPLATE("the facets add members and no bytes", R, float, double) {
 
 TEST_CASE("a feature not chosen costs nothing: the configurations' bytes and arrays as before") {
   // The figures of the configurations before these features existed (examples/variants.cmake
-  // checks the same): 6 numbers per particle, +2 Lifetime, +4 ForceAccumulator, +3
+  // checks the same): 6 numbers per particle, +3 Lifetime, +4 ForceAccumulator, +3
   // PerParticleAcceleration.
   static_assert(ParticleSystem<float>::storage_bytes_per_particle == 24);
   static_assert(pointmass::detail::SystemAccess::Layout<ParticleSystem<float>>::array_count == 6);
   static_assert(ParticleSystem<double, damping::None>::storage_bytes_per_particle == 48);
   static_assert(ParticleSystem<float, damping::None, position::Euler,
-                               features::Lifetime>::storage_bytes_per_particle == 32);
+                               features::Lifetime>::storage_bytes_per_particle == 36);
   // The raw arrays gain pointers for the new columns (nullptr, never walked), nothing for
   // absent user columns; the system object gains nothing for absent handles.
   using Lean = ParticleSystem<float>;
-  static_assert(sizeof(Lean::StepView::Arrays) == 26 * sizeof(float*) + sizeof(std::size_t));
+  static_assert(sizeof(Lean::StepView::Arrays) == 27 * sizeof(float*) + sizeof(std::size_t));
   // The object beside its arrays: block pointer and capacity, two flags, d and ln d (hi, lo),
   // the acceleration: 48 bytes on a 64-bit target, as before (measured on the commit before);
   // and the last step's length and its factor d^t, kept for the next step of that length: 8.

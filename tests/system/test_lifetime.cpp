@@ -86,9 +86,12 @@ TEST_CASE_TEMPLATE(
     system.set_lifetime(i, n % 2 == 0 ? exact : longer);
   }
   const auto expired = [](R age, R lifetime) {
-    return pointmass::detail::SystemAccess::expired<decltype(system)>(age, lifetime);
+    return pointmass::detail::lifetime_expired(age, R(0), lifetime);
   };
   CHECK(expired(exact, exact));
+  // the age is age + age_error: what the rounding dropped counts
+  const R below = std::nextafter(exact, R(0));
+  CHECK(pointmass::detail::lifetime_expired(below, exact - below, exact));
   CHECK_FALSE(expired(std::nextafter(exact, R(0)), exact));
   CHECK_FALSE(expired(real_infinity<R>, real_infinity<R>));  // never, even overflowed
   const auto alive = [&] {
@@ -214,4 +217,36 @@ TEST_CASE("expiry callback that throws: it and those before it are removed, the 
   CHECK(std::adjacent_find(second.begin(), second.end()) == second.end());
   for (const int id : second) CHECK((id < 12 && left.count(id) == 1));
   CHECK(system.size() == 4);
+}
+
+TEST_CASE("lifetime: float ages count every step exactly, far from zero") {
+  // From 2^18 s each 1/60 s step rounds to 1/32 s in a float sum (ages twice too fast), and
+  // from 2^19 s it adds nothing; the counted age (age + age_error) gains the steps' sum.
+  ParticleSystem<float, damping::None, position::Euler, features::Lifetime> system(2);
+  const std::size_t early = system.spawn({}, {});
+  const std::size_t late = system.spawn({}, {});
+  system.column<Column::age>()[early] = 0x1p18f;
+  system.column<Column::age>()[late] = 0x1p19f;
+  system.set_lifetime(early, 0x1p18f + 100.0f);
+  system.set_lifetime(late, 0x1p19f + 100.0f);
+  const float step = 1.0f / 60.0f;
+  const double exact_steps = 100.0 / double(step);  // 6,000 steps of the float step
+  std::size_t steps = 0;
+  std::size_t early_gone = 0;
+  while (system.size() > 0 && steps < 20000) {
+    system.step(step);
+    ++steps;
+    if (early_gone == 0 && system.size() < 2) early_gone = steps;
+    if (steps == 3000) {  // 50 s in: both ages have grown by 50 s
+      for (std::size_t i = 0; i < system.size(); ++i) {
+        const double grown = double(system.age(i)) - double(system.lifetime(i)) + 100.0;
+        CHECK(grown == doctest::Approx(3000.0 * double(step)).epsilon(1e-6));
+      }
+    }
+  }
+  // Each expires on the step its exact age reaches its lifetime (within the rounding of one).
+  CHECK(double(early_gone) >= exact_steps - 1.0);
+  CHECK(double(early_gone) <= exact_steps + 1.0);
+  CHECK(double(steps) >= exact_steps - 1.0);
+  CHECK(double(steps) <= exact_steps + 1.0);
 }

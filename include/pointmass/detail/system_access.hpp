@@ -44,10 +44,6 @@ struct SystemAccess {
   static void arrays_changed(System& system) noexcept {
     system.forget_retention();
   }
-  template <class System, class R>
-  static constexpr bool expired(R age, R lifetime) noexcept {
-    return lifetime_expired(age, lifetime);
-  }
   template <class System>
   static bool next_step_backward(const System& system) noexcept {
     return system.backward_;

@@ -49,6 +49,16 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 struct NoFactors {};
 
+// Adds a step of t to an age kept as age + error (Kahan's sum): the age counts the steps'
+// exact sum, so a float age of 2^20 s still grows by 1/60 s a step and expires on time.
+template <class R>
+POINTMASS_HD constexpr void count_age(R& age, R& error, R t) noexcept {
+  const R step = t + error;
+  const R sum = age + step;
+  error = step - (sum - age);  // exact while age >= step; both 0 on the first step
+  age = sum;
+}
+
 // P is checked by ParticleSystem (detail::check_policy_pair), with one sentence.
 template <Real R, DampingPolicy D, class P, class Layout>
 class SystemKernel {
@@ -207,7 +217,7 @@ class SystemKernel {
       advance<D, P>(arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
       advance<D, P>(arrays.position_z[i], arrays.velocity_z[i], az, t, factors);
     }
-    if constexpr (Layout::has_lifetime) arrays.age[i] += t;
+    if constexpr (Layout::has_lifetime) count_age(arrays.age[i], arrays.age_error[i], t);
   }
 
  public:

@@ -29,11 +29,11 @@ struct NoExpiryCallback {
   void operator()(std::size_t) const noexcept {}
 };
 
-// A particle of this age and lifetime has expired (an infinite lifetime never does). Branch
-// free, so that the block scan vectorises.
+// A particle of this age (age + error, detail::count_age) and lifetime has expired (an
+// infinite lifetime never does). Branch free, so that the block scan vectorises.
 template <class R>
-POINTMASS_HD constexpr bool lifetime_expired(R age, R lifetime) noexcept {
-  return (age >= lifetime) & (lifetime < real_infinity<R>);
+POINTMASS_HD constexpr bool lifetime_expired(R age, R error, R lifetime) noexcept {
+  return (age + error >= lifetime) & (lifetime < real_infinity<R>);
 }
 
 template <class S, DampingPolicy D, class P, class... Features>
@@ -206,7 +206,7 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
   // For the facets, which see only their base's members (system/deprecated.hpp).
   using NoCallback = NoExpiryCallback;
   POINTMASS_HD static constexpr bool expired(R age, R lifetime) noexcept {
-    return lifetime_expired(age, lifetime);
+    return lifetime_expired(age, R(0), lifetime);
   }
   // Marks the system as inside a removal pass (an expiry callback, kill_if's predicate) while
   // it lives.
@@ -232,6 +232,7 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
       std::size_t i = 0;
       while (i < size()) {
         const R* age = arrays().age;
+        const R* age_error = arrays().age_error;
         const R* lifetime = arrays().lifetime;
         if (i % block == 0 && i + block <= size()) {
           // age >= lifetime is all an expiry needs (and a plain comparison vectorises); the
@@ -244,14 +245,14 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
 #endif
           // the expiry scan (tests/system probes this line)
           for (std::size_t k = 0; k < block; ++k) {
-            expiring |= static_cast<unsigned>(age[i + k] >= lifetime[i + k]);
+            expiring |= static_cast<unsigned>(age[i + k] + age_error[i + k] >= lifetime[i + k]);
           }
           if (expiring == 0) {
             i += block;
             continue;
           }
         }
-        if (!lifetime_expired(age[i], lifetime[i])) {
+        if (!lifetime_expired(age[i], age_error[i], lifetime[i])) {
           ++i;
         } else if (!expire_one(i, on_expire)) {
           return;

@@ -239,6 +239,7 @@ class SystemState {
     if constexpr (Layout::per_particle_damping) store_damping(i, damping_state{});
     if constexpr (Layout::has_lifetime) {
       a.age[i] = R(0);
+      a.age_error[i] = R(0);
       a.lifetime[i] = real_infinity<R>;
     }
     store_user_columns(i, columns, std::make_index_sequence<user_column_count>{});

@@ -31,16 +31,15 @@ class SystemLifetime : public Base {
  public:
   [[nodiscard]] R age(std::size_t i) const
       noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_lifetime {
-    return this->valid_index("age", i) ? this->arrays().age[i] : R(0);
+    return this->valid_index("age", i) ? this->arrays().age[i] + this->arrays().age_error[i] : R(0);
   }
   [[nodiscard]] R lifetime(std::size_t i) const
       noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_lifetime {
     return this->valid_index("lifetime", i) ? this->arrays().lifetime[i] : R(0);
   }
   /// Seconds particle i lives (> 0; infinity for ever: an infinite lifetime never expires).
-  /// It is removed by the step after which its age reaches this. Ages add up in R: in float
-  /// a step of t stops adding to an age once the age's spacing exceeds 2 t (at 60 Hz, after
-  /// 2^19 s, about 6 days), so give lifetimes beyond 2^17 s to a double system.
+  /// It is removed by the step after which its age reaches this. Ages count the steps'
+  /// exact sum (the age column and the rounding it dropped, age_error), in float as in double.
   void set_lifetime(std::size_t i, R seconds) requires Base::Layout::has_lifetime {
     if (detail::check_index("set_lifetime", i, this->size()) &&
         detail::check_lifetime("set_lifetime", seconds)) {
