@@ -55,8 +55,8 @@ template <class R>
 POINTMASS_HD constexpr void count_age(R& age, R& error, R t) noexcept {
   const R step = t + error;
   const R sum = age + step;
-  error = step - (sum - age);  // exact while age >= step; both 0 on the first step
-  age = sum;
+  error = step - (sum - age);  // exact while age >= step; 0 on the first step
+  age = sum;  // once it overflows, age + error is NaN: lifetime_expired reads that as expired
 }
 
 // P is checked by ParticleSystem (detail::check_policy_pair), with one sentence.
@@ -142,8 +142,8 @@ class SystemKernel {
   /// The step of particle i, as Particle::integrate computes it:
   ///   a  = acceleration + force * inverse_mass;  v1 = D::velocity(v0, a, t, f);
   ///   p1 = P::position(p0, v0, v1, a, t, f);     force = 0;  age += t
-  /// on each of x, y and z (advance<D, P> in particle.hpp; with positions stored wider or
-  /// compensated, detail::advance_stored); with features::Interpolation, p0 is kept as the
+  /// on each of x, y and z (integrate<D, P> in particle.hpp; with positions stored wider or
+  /// compensated, detail::integrate_stored); with features::Interpolation, p0 is kept as the
   /// previous position first. The user's columns are not touched. A particle of inverse mass
   /// 0 does not move. Plain arithmetic on the arrays: runs on a GPU as it runs here (see
   /// docs/hardening.md for the compiler settings under which a device gives the same bits).
@@ -196,26 +196,29 @@ class SystemKernel {
         const R inverse_mass = apply_forces(arrays, i, ax, ay, az);
         movable = inverse_mass > R(0);
       }
-      advance_stored_if(movable, arrays.position_x[i], arrays.position_error_x, i,
-                        arrays.velocity_x[i], ax, t, factors);
-      advance_stored_if(movable, arrays.position_y[i], arrays.position_error_y, i,
-                        arrays.velocity_y[i], ay, t, factors);
-      advance_stored_if(movable, arrays.position_z[i], arrays.position_error_z, i,
-                        arrays.velocity_z[i], az, t, factors);
+      integrate_stored_if(movable, arrays.position_x[i], arrays.position_error_x, i,
+                          arrays.velocity_x[i], ax, t, factors);
+      integrate_stored_if(movable, arrays.position_y[i], arrays.position_error_y, i,
+                          arrays.velocity_y[i], ay, t, factors);
+      integrate_stored_if(movable, arrays.position_z[i], arrays.position_error_z, i,
+                          arrays.velocity_z[i], az, t, factors);
     } else if constexpr (Layout::has_forces && AllMovable) {
       apply_forces(arrays, i, ax, ay, az);
-      advance<D, P>(arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
-      advance<D, P>(arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
-      advance<D, P>(arrays.position_z[i], arrays.velocity_z[i], az, t, factors);
+      integrate<D, P>(arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
+      integrate<D, P>(arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
+      integrate<D, P>(arrays.position_z[i], arrays.velocity_z[i], az, t, factors);
     } else if constexpr (Layout::has_forces) {
       const R inverse_mass = apply_forces(arrays, i, ax, ay, az);
-      advance_if_movable(inverse_mass, arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
-      advance_if_movable(inverse_mass, arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
-      advance_if_movable(inverse_mass, arrays.position_z[i], arrays.velocity_z[i], az, t, factors);
+      integrate_if_movable(inverse_mass, arrays.position_x[i], arrays.velocity_x[i], ax, t,
+                           factors);
+      integrate_if_movable(inverse_mass, arrays.position_y[i], arrays.velocity_y[i], ay, t,
+                           factors);
+      integrate_if_movable(inverse_mass, arrays.position_z[i], arrays.velocity_z[i], az, t,
+                           factors);
     } else {
-      advance<D, P>(arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
-      advance<D, P>(arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
-      advance<D, P>(arrays.position_z[i], arrays.velocity_z[i], az, t, factors);
+      integrate<D, P>(arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
+      integrate<D, P>(arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
+      integrate<D, P>(arrays.position_z[i], arrays.velocity_z[i], az, t, factors);
     }
     if constexpr (Layout::has_lifetime) count_age(arrays.age[i], arrays.age_error[i], t);
   }
@@ -329,7 +332,7 @@ class SystemKernel {
   }
 
   // True when each of the `count` inverse masses from `inverse_mass` makes its particle
-  // movable as advance_if_movable's select decides it (0 < m + 0: false for zeros of either
+  // movable as integrate_if_movable's select decides it (0 < m + 0: false for zeros of either
   // sign and NaN, and for a subnormal m where the processor flushes it to zero): then their
   // step needs no select. A reduction the compiler vectorises, one load per particle.
   POINTMASS_DETAIL_ALWAYS_INLINE static bool all_movable(const R* inverse_mass,
@@ -377,11 +380,11 @@ class SystemKernel {
   // has no SSE2 pattern for a 64-bit mask from a double comparison, so a `bool` made into a
   // mask left double systems with forces scalar there.
   template <class F>
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void advance_if_movable(
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void integrate_if_movable(
       R inverse_mass, R& p, R& v, R a, R t, const F& factors) noexcept {
     R p1 = p;
     R v1 = v;
-    advance<D, P>(p1, v1, a, t, factors);
+    integrate<D, P>(p1, v1, a, t, factors);
     p = select_if_less(R(0), inverse_mass, p1, p);
     v = select_if_less(R(0), inverse_mass, v1, v);
   }
@@ -389,20 +392,20 @@ class SystemKernel {
   // advance_if for a position stored wider or compensated; `error` is the error column
   // (nullptr unless compensated).
   template <class F>
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void advance_stored_if(
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void integrate_stored_if(
       bool movable, position_element& p, R* error, std::size_t i, R& v, R a, R t,
       const F& factors) noexcept {
     if constexpr (!Layout::has_forces) {
-      // Every particle is movable: stepped in place, so that advance stores the velocity
+      // Every particle is movable: stepped in place, so that integrate stores the velocity
       // before it computes the displacement from v0, which then cannot be loaded from memory
-      // a second time (advance in particle.hpp says why that matters). Same bits.
+      // a second time (integrate in particle.hpp says why that matters). Same bits.
       static_cast<void>(movable);
       R no_error = R(0);
       R& lo = [&]() -> R& {
         if constexpr (Layout::compensated_positions) return error[i];
         else return no_error;
       }();
-      advance_stored<D, P, position_storage>(p, lo, v, a, t, factors);
+      integrate_stored<D, P, position_storage>(p, lo, v, a, t, factors);
       return;
     }
     position_element p1 = p;
@@ -410,7 +413,7 @@ class SystemKernel {
     R lo = R(0);
     if constexpr (Layout::compensated_positions) lo = error[i];
     R lo1 = lo;
-    advance_stored<D, P, position_storage>(p1, lo1, v1, a, t, factors);
+    integrate_stored<D, P, position_storage>(p1, lo1, v1, a, t, factors);
     p = select(movable, p1, p);
     v = select(movable, v1, v);
     if constexpr (Layout::compensated_positions) error[i] = select(movable, lo1, lo);

@@ -29,11 +29,11 @@ struct NoExpiryCallback {
   void operator()(std::size_t) const noexcept {}
 };
 
-// A particle of this age (age + error, detail::count_age) and lifetime has expired (an
-// infinite lifetime never does). Branch free, so that the block scan vectorises.
+// A particle of this age (age + error, detail::count_age; NaN once it overflowed) and lifetime
+// has expired (an infinite lifetime never does). Branch free, so that the block scan vectorises.
 template <class R>
 POINTMASS_HD constexpr bool lifetime_expired(R age, R error, R lifetime) noexcept {
-  return (age + error >= lifetime) & (lifetime < real_infinity<R>);
+  return !(age + error < lifetime) & (lifetime < real_infinity<R>);
 }
 
 template <class S, DampingPolicy D, class P, class... Features>
@@ -245,7 +245,7 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
 #endif
           // the expiry scan (tests/system probes this line)
           for (std::size_t k = 0; k < block; ++k) {
-            expiring |= static_cast<unsigned>(age[i + k] + age_error[i + k] >= lifetime[i + k]);
+            expiring |= static_cast<unsigned>(!(age[i + k] + age_error[i + k] < lifetime[i + k]));
           }
           if (expiring == 0) {
             i += block;

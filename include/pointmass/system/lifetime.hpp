@@ -20,6 +20,7 @@
 
 #include "../config.hpp"
 #include "../detail/validate.hpp"
+#include "../real.hpp"
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
@@ -31,7 +32,9 @@ class SystemLifetime : public Base {
  public:
   [[nodiscard]] R age(std::size_t i) const
       noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_lifetime {
-    return this->valid_index("age", i) ? this->arrays().age[i] + this->arrays().age_error[i] : R(0);
+    if (!this->valid_index("age", i)) return R(0);
+    const R age = this->arrays().age[i] + this->arrays().age_error[i];
+    return real_isnan(age) ? real_infinity<R> : age;  // NaN: the count overflowed (count_age)
   }
   [[nodiscard]] R lifetime(std::size_t i) const
       noexcept(!POINTMASS_HOST_CHECKS) requires Base::Layout::has_lifetime {
