@@ -26,7 +26,7 @@
 // d = P::position(-0, v0, v1, a, t, f) computed in the arithmetic's precision and added in the
 // position's (precision.hpp); the velocity is the same, bit for bit, as with plain floats.
 //
-// Owns: advance<D, P> (one step of one body) and BasicParticle / Particle.
+// Owns: integrate<D, P> (one step of one body's values) and BasicParticle / Particle.
 // Must not include: particle_system.hpp, forces.hpp, units.hpp (they build on it).
 #pragma once
 
@@ -54,12 +54,20 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 /// arithmetic, same bits either way.
 template <class D, class P, class Position, class Velocity, class Acceleration, class Time,
           class Factors>
-POINTMASS_HD constexpr void advance(Position& p, Velocity& v, const Acceleration& a, const Time& t,
-                                    const Factors& factors) noexcept {
+POINTMASS_HD constexpr void integrate(Position& p, Velocity& v, const Acceleration& a,
+                                      const Time& t, const Factors& factors) noexcept {
   const Velocity v0 = v;
   const Velocity v1 = D::velocity(v0, a, t, factors);
   v = v1;
   p = P::position(p, v0, v1, a, t, factors);
+}
+/// The name of integrate<D, P> in 0.1, kept one minor version.
+template <class D, class P, class Position, class Velocity, class Acceleration, class Time,
+          class Factors>
+[[deprecated("pointmass 0.2: use integrate<D, P>")]] POINTMASS_HD constexpr void advance(
+    Position& p, Velocity& v, const Acceleration& a, const Time& t,
+    const Factors& factors) noexcept {
+  integrate<D, P>(p, v, a, t, factors);
 }
 
 namespace detail {
@@ -70,10 +78,10 @@ namespace detail {
 /// added to the stored position in the position's. p is the element; lo the error
 /// term (Compensated only; untouched otherwise). Particle::integrate computes the same.
 template <class D, class P, class Storage, class R, class Factors>
-POINTMASS_HD constexpr void advance_stored(typename Storage::element& p, R& lo, R& v, const R& a,
-                                           const R& t, const Factors& factors) noexcept {
+POINTMASS_HD constexpr void integrate_stored(typename Storage::element& p, R& lo, R& v, const R& a,
+                                             const R& t, const Factors& factors) noexcept {
   R displacement = -R(0);  // -0: the policy's p0 + x is then x, exactly (above)
-  advance<D, P>(displacement, v, a, t, factors);
+  integrate<D, P>(displacement, v, a, t, factors);
   if constexpr (Storage::compensated) {
     Storage::add(p, lo, displacement);
   } else {
@@ -125,12 +133,6 @@ class BasicParticle {
   static constexpr bool caches_factors = detail::keeps_factors_v<D, real>;
   /// True when the position is stored in the arithmetic's own precision (as today).
   static constexpr bool plain_position = std::is_same_v<position_precision, real>;
-  /// True for Cyclone's own equations (AccelerateThenDamp with Euler, plain
-  /// numbers and positions), whose factor is a call to the C library's power function: a new
-  /// step length then takes the engine's order (integrate).
-  static constexpr bool engine_order = std::is_same_v<D, damping::AccelerateThenDamp> &&
-                                       std::is_same_v<P, position::Euler> && plain_position &&
-                                       std::is_same_v<time_type, real>;
   static_assert(plain_position || PositionPrecision<position_precision, real>,
                 "BasicParticle: the quantity set's position_precision must be a Real at least "
                 "as wide as its real, or Compensated<real>");
@@ -313,33 +315,6 @@ class BasicParticle {
       force_accumulator_ = {};
       return;
     }
-    if constexpr (engine_order) {
-      // The operations of advance (p1 = p0 + v0 t, v1 = (v0 + a t) d^t) on the same values,
-      // so the same bits, in the order that keeps least around the power function's call
-      // (every vector register is caller-saved, so what is live across it is spilled): for
-      // float the call first, for double the engine's own order (everything but the damping
-      // before the call, the velocity damped after it); in both the new length is kept
-      // before the call and its factor after, so that nothing but the factor and the undamped
-      // velocity is needed after it. Each the fastest of the orders tried with g++ 12 -O3
-      // -march=native in the engine benchmark's changing-step rows (docs/results/engine.md).
-      cache_.duration = t;
-      if constexpr (sizeof(real) == 4) {
-        const damping_factors factors = detail::scalar_factors<D>(damping_, duration);
-        cache_.factors = factors;
-        position_ = position_ + velocity_ * t;
-        velocity_ =
-            (velocity_ + (acceleration_ + force_accumulator_ * inverse_mass_) * t) * factors.kept;
-        force_accumulator_ = {};
-      } else {
-        position_ = position_ + velocity_ * t;
-        velocity_ = velocity_ + (acceleration_ + force_accumulator_ * inverse_mass_) * t;
-        force_accumulator_ = {};
-        const damping_factors factors = detail::scalar_factors<D>(damping_, duration);
-        cache_.factors = factors;
-        velocity_ = velocity_ * factors.kept;
-      }
-      return;
-    }
     // The factors first: a power function's call then comes before the particle's values are
     // loaded, so none has to be kept across it.
     const damping_factors factors = detail::scalar_factors<D>(damping_, duration);
@@ -358,13 +333,13 @@ class BasicParticle {
       // the static_assert above has said why
     } else if constexpr (plain_position) {
       auto p = typed<length_type>(position_);
-      advance<D, P>(p, v, resulting_acceleration, duration, factors);
+      pointmass::integrate<D, P>(p, v, resulting_acceleration, duration, factors);
       position_ = raw(p);
     } else {
-      // The displacement from p0 = -0 (see advance_stored), typed (so SI quantities check its
+      // The displacement from p0 = -0 (see integrate_stored), typed (so SI quantities check its
       // dimensions), then added to the stored position in its own precision (precision.hpp).
       auto displacement = typed<length_type>(Vector3<real>{-real(0), -real(0), -real(0)});
-      advance<D, P>(displacement, v, resulting_acceleration, duration, factors);
+      pointmass::integrate<D, P>(displacement, v, resulting_acceleration, duration, factors);
       const Vector3<real> d = raw(displacement);
       if constexpr (Storage::compensated) {
         Storage::add(position_.x, position_error_.x, d.x);

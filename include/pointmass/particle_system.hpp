@@ -9,7 +9,7 @@
 //   ParticleSystem<Precision<float, Compensated<float>>>            far from the origin
 //
 // ParticleSystem<S, DampingPolicy, PositionPolicy, Features...> steps many particles with the
-// policies of `Particle` and its results, bit for bit: each particle's step is advance<D, P>
+// policies of `Particle` and its results, bit for bit: each particle's step is integrate<D, P>
 // (particle.hpp) on x, y and z (tests/system/ proves it for every policy pair). S is a Real or
 // a Precision<Real, Position> (precision.hpp). Each feature tag (features.hpp) adds what it
 // stores, and what is not chosen is neither stored nor computed. docs/particle-system.md is

@@ -75,7 +75,7 @@ struct CoordinateFlight {
   R position(R t) const noexcept {
     R p = p0;
     R v = v0;
-    advance<D, position::Exact>(p, v, a, t, D::factors(damping, t));
+    integrate<D, position::Exact>(p, v, a, t, D::factors(damping, t));
     return p;
   }
 };
@@ -131,7 +131,7 @@ template <Real R, class D>
     state = typename D::template State<R>(particle.damping());
   Vector3<R> p = particle.position();
   Vector3<R> v = particle.velocity();
-  advance<D, position::Exact>(p, v, particle.acceleration(), time, D::factors(state, time));
+  integrate<D, position::Exact>(p, v, particle.acceleration(), time, D::factors(state, time));
   return {p, v};
 }
 template <Real R, class D>

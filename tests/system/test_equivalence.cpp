@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
 // A system and the equivalent scalar Particles, stepped side by side, agree bit for bit:
-// each particle's step is advance<D, P> on x, y and z apart, the same operations in the same
+// each particle's step is integrate<D, P> on x, y and z apart, the same operations in the same
 // order as Particle::integrate on a Vector3, so nothing may differ (not even by one ulp).
 // Every damping and position policy pair, float and double; uniform and per-particle values.
 #include <doctest/doctest.h>

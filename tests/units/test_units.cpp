@@ -147,8 +147,8 @@ TEST_CASE_TEMPLATE("the step's equations run on quantities and give the closed f
   const Vector3<pm::units::acceleration<R>> a =
       Vector3<R>{R(0), R(-20), R(0)} * si::meters_per_second_squared;
   const pm::units::time<R> t = R(0.5) * si::seconds;
-  pm::advance<pm::damping::None, pm::position::ConstantAcceleration>(p, v, a, t,
-                                                                     pm::damping::None::Factors{});
+  pm::integrate<pm::damping::None, pm::position::ConstantAcceleration>(
+      p, v, a, t, pm::damping::None::Factors{});
   // By hand: y = 1.5 + 30 * 0.5 - 20 * 0.125 = 14, z = 40 * 0.5 = 20; vy = 30 - 10 = 20.
   POINTMASS_CHECK_CLOSE(numbers(p), (Vector3<R>{R(0), R(14), R(20)}), R(8));
   POINTMASS_CHECK_CLOSE(numbers(v), (Vector3<R>{R(0), R(20), R(40)}), R(8));
