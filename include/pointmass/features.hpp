@@ -101,6 +101,9 @@ enum class Column : unsigned char {
   previous_position_y,
   previous_position_z,
   handle_slot,
+  kick_x,  ///< position::VelocityVerlet only: the half kick the velocity holds on credit
+  kick_y,
+  kick_z,
 };
 
 /// A stable name of one particle of a ParticleSystem with features::BasicHandles<G> (see
@@ -116,6 +119,9 @@ namespace detail {
 
 template <class T, class... List>
 inline constexpr bool contains_v = (std::is_same_v<T, List> || ...);
+
+/// Not a user's feature: the layout of a system whose position policy kicks (kick_x, y, z).
+struct Kicks {};
 
 template <class T>
 struct is_user_column : std::false_type {};
@@ -244,7 +250,10 @@ T element_of(T* Class::*);
   X(previous_position_x, position_element, has_interpolation) \
   X(previous_position_y, position_element, has_interpolation) \
   X(previous_position_z, position_element, has_interpolation) \
-  X(handle_slot, std::uint32_t, has_handles)
+  X(handle_slot, std::uint32_t, has_handles)                  \
+  X(kick_x, R, has_kicks)                                     \
+  X(kick_y, R, has_kicks)                                     \
+  X(kick_z, R, has_kicks)
 
 #define POINTMASS_DETAIL_MEMBER(name, type, stored) type* name = nullptr;
 #define POINTMASS_DETAIL_ENTRY(name, type, stored) ColumnEntry<&Arrays::name, (stored)>{},
@@ -274,7 +283,8 @@ struct SystemLayout {
   /// `damping`, and for LogDamping (PerSecond, Exact) ln d's two parts in `damping_log_hi`
   /// and `damping_log_lo`. A step then reads plain arrays (an array of three-member structs
   /// is a strided load, which g++ -O2 does not vectorise); a policy of the user's with another
-  /// state keeps that state whole in `damping`. load_damping / store_damping convert.
+  /// state keeps that state whole in `damping`. load_damping and SystemState::store_damping
+  /// convert.
   static constexpr bool log_damping_state = std::is_same_v<damping_state, damping::LogDamping<R>>;
   static constexpr bool value_damping_state =
       log_damping_state || std::is_same_v<damping_state, damping::StoredDamping<R>>;
@@ -293,6 +303,7 @@ struct SystemLayout {
   static constexpr bool has_lifetime = contains_v<features::Lifetime, Features...>;
   static constexpr bool has_interpolation = contains_v<features::Interpolation, Features...>;
   static constexpr bool has_handles = !std::is_void_v<handles>;
+  static constexpr bool has_kicks = contains_v<Kicks, Features...>;
 
   /// Raw pointers to the arrays (nullptr for those the configuration does not store) and
   /// the number of live particles: what step_particle works on. `user` holds the pointers of
@@ -313,19 +324,6 @@ struct SystemLayout {
       return damping_state(arrays.damping[i]);
     } else {
       return arrays.damping[i];
-    }
-  }
-  /// Stores particle i's damping state into the damping columns (per_particle_damping only).
-  static constexpr void store_damping(const Arrays& arrays, std::size_t i,
-                                      const damping_state& state) noexcept {
-    if constexpr (value_damping_state) {
-      arrays.damping[i] = state.value();
-    } else {
-      arrays.damping[i] = state;
-    }
-    if constexpr (log_damping_state) {
-      arrays.damping_log_hi[i] = state.split_log().hi;
-      arrays.damping_log_lo[i] = state.split_log().lo;
     }
   }
   /// True for the columns that hold parts of a damping state that must agree with each

@@ -72,16 +72,32 @@ template <class D, class P, class Position, class Velocity, class Acceleration, 
 
 namespace detail {
 
+/// One component's step on plain values: integrate<D, P>, or integrate_kicked with `kick`
+/// and `last_half` for a kicked policy (untouched otherwise).
+template <class D, class P, class Position, class R, class Factors>
+POINTMASS_HD constexpr void integrate_component(Position& p, R& v, R& kick, const R& a, const R& t,
+                                                const R& last_half,
+                                                const Factors& factors) noexcept {
+  if constexpr (kicks_v<P>) {
+    integrate_kicked<D, P>(p, v, kick, a, t, last_half, factors);
+  } else {
+    static_cast<void>(kick);
+    static_cast<void>(last_half);
+    integrate<D, P>(p, v, a, t, factors);
+  }
+}
+
 /// One component's step with a position stored as Storage says (precision.hpp's
 /// PositionStorage): the displacement in the arithmetic's precision (the position policy from
 /// p0 = -0, which the policy's p0 + x leaves out exactly: -0 + x is x, zeros' signs included),
 /// added to the stored position in the position's. p is the element; lo the error
 /// term (Compensated only; untouched otherwise). Particle::integrate computes the same.
 template <class D, class P, class Storage, class R, class Factors>
-POINTMASS_HD constexpr void integrate_stored(typename Storage::element& p, R& lo, R& v, const R& a,
-                                             const R& t, const Factors& factors) noexcept {
+POINTMASS_HD constexpr void integrate_stored(typename Storage::element& p, R& lo, R& v, R& kick,
+                                             const R& a, const R& t, const R& last_half,
+                                             const Factors& factors) noexcept {
   R displacement = -R(0);  // -0: the policy's p0 + x is then x, exactly (above)
-  integrate<D, P>(displacement, v, a, t, factors);
+  integrate_component<D, P>(displacement, v, kick, a, t, last_half, factors);
   if constexpr (Storage::compensated) {
     Storage::add(p, lo, displacement);
   } else {
@@ -131,6 +147,8 @@ class BasicParticle {
   /// policies whose factors depend on the step length (all but None and PerFrame). The kept
   /// factors are what D::factors returns, so results do not change, bit for bit.
   static constexpr bool caches_factors = detail::keeps_factors_v<D, real>;
+  /// True for a position policy that keeps a credited half kick (position::VelocityVerlet).
+  static constexpr bool kicks = detail::kicks_v<P>;
   /// True when the position is stored in the arithmetic's own precision (as today).
   static constexpr bool plain_position = std::is_same_v<position_precision, real>;
   static_assert(plain_position || PositionPrecision<position_precision, real>,
@@ -186,6 +204,12 @@ class BasicParticle {
   }
   [[nodiscard]] POINTMASS_HD constexpr Vector3<velocity_type> velocity() const noexcept {
     return typed<velocity_type>(velocity_);
+  }
+  /// VelocityVerlet: the half kick velocity() holds on credit, which the next step settles
+  /// (position.hpp). set_velocity and set_position leave it: the next step still settles it.
+  [[nodiscard]] POINTMASS_HD constexpr Vector3<velocity_type> credited_kick()
+      const noexcept requires kicks {
+    return typed<velocity_type>(kick_.velocity);
   }
   [[nodiscard]] POINTMASS_HD constexpr Vector3<acceleration_type> acceleration() const noexcept {
     return typed<acceleration_type>(acceleration_);
@@ -333,13 +357,13 @@ class BasicParticle {
       // the static_assert above has said why
     } else if constexpr (plain_position) {
       auto p = typed<length_type>(position_);
-      pointmass::integrate<D, P>(p, v, resulting_acceleration, duration, factors);
+      step_values(p, v, resulting_acceleration, duration, factors);
       position_ = raw(p);
     } else {
       // The displacement from p0 = -0 (see integrate_stored), typed (so SI quantities check its
       // dimensions), then added to the stored position in its own precision (precision.hpp).
       auto displacement = typed<length_type>(Vector3<real>{-real(0), -real(0), -real(0)});
-      pointmass::integrate<D, P>(displacement, v, resulting_acceleration, duration, factors);
+      step_values(displacement, v, resulting_acceleration, duration, factors);
       const Vector3<real> d = raw(displacement);
       if constexpr (Storage::compensated) {
         Storage::add(position_.x, position_error_.x, d.x);
@@ -355,8 +379,28 @@ class BasicParticle {
     force_accumulator_ = {};
   }
 
+  // integrate<D, P> on typed values, or integrate_kicked with this particle's credited kick.
+  template <class Position, class Velocity, class Acceleration>
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr void step_values(
+      Position& p, Velocity& v, const Acceleration& a, const time_type& duration,
+      const damping_factors& factors) noexcept {
+    if constexpr (kicks) {
+      auto kick = typed<velocity_type>(kick_.velocity);
+      pointmass::integrate_kicked<D, P>(p, v, kick, a, duration,
+                                        Q::template make<time_type>(kick_.last_half), factors);
+      kick_ = {raw(kick), Q::raw(duration) * real(0.5)};  // the same product as the step's
+    } else {
+      pointmass::integrate<D, P>(p, v, a, duration, factors);
+    }
+  }
+
   using position_value = typename Storage::value;
   struct NoPositionError {};
+  struct Kick {  // VelocityVerlet's credited half kick, and the last step's length / 2
+    Vector3<real> velocity{};
+    real last_half = real(0);
+  };
+  struct NoKick {};
 
   template <class T, class N>
   POINTMASS_HD static constexpr Vector3<T> typed(const Vector3<N>& v) noexcept {
@@ -384,6 +428,7 @@ class BasicParticle {
   [[no_unique_address]] std::conditional_t<caches_factors, detail::KeptFactors<D, real>,
                                            detail::NoKeptFactors>
       cache_{};
+  [[no_unique_address]] std::conditional_t<kicks, Kick, NoKick> kick_{};
 };
 
 /// The particle over plain numbers (SI units by convention: metres, seconds, kilograms). R is

@@ -18,6 +18,8 @@
 //   Exact                 the integral of v(t) over   exact   projectiles with drag, with
 //                         the step, for constant a            damping::Exact
 //                         and per-second damping
+//   VelocityVerlet        p0 + (v0 + v1) t / 2 after  2       springs, ropes, orbits: forces
+//                         a half kick (see there)             at second order, same cost
 //
 //   * global order on the continuous model. The explicit forms (Euler, ConstantAcceleration)
 //     gain energy on an undamped spring at any step.
@@ -29,7 +31,8 @@
 // dimensioned quantities alike.
 //
 // Owns: the position policies, their traits, the pair traits (order_v,
-// is_exact_for_constant_acceleration_v), PositionPolicyFor and the one-sentence pair check.
+// is_exact_for_constant_acceleration_v), PositionPolicyFor, the one-sentence pair check and
+// integrate_kicked (VelocityVerlet's step on values).
 // Must not include: particle.hpp or anything above it.
 #pragma once
 
@@ -99,6 +102,33 @@ struct SemiImplicit {
   }
 };
 
+/// Velocity Verlet (kick, drift, damp, drift, kick): second order under forces for one force
+/// evaluation a step, the accumulated force as every policy takes it. A step of t with the
+/// acceleration a at p0 completes the last step's second half kick with a (the velocity read
+/// between steps took it on credit with the last step's acceleration), kicks t/2, drifts t/2,
+/// damps by the step's retention, drifts t/2 and kicks t/2 on credit again:
+///   v0 = v - kick + a (t_last / 2 + t / 2);   v1 = v0 d^t;   p1 = p0 + (v0 + v1) t / 2;
+///   kick = a t / 2;   v = v1 + kick
+/// The body keeps the credited kick (a velocity) and t_last / 2: one more vector per particle.
+/// Exact for constant acceleration without damping; exact for damping alone (v1 = v0 d^t).
+struct VelocityVerlet {
+  /// Global order of accuracy against the continuous model.
+  static constexpr int order = 2;
+  /// The body keeps the half kick the velocity took on credit (see above).
+  static constexpr bool kicks = true;
+  /// True when, paired with damping policy D, a step is the exact flow for constant
+  /// acceleration (without damping only).
+  template <class D>
+  static constexpr bool exact_for_constant_acceleration = std::is_same_v<D, damping::None>;
+  /// The drift: v0 after the kicks, v1 after the damping.
+  template <class P, class V, class A, class T, class F>
+  POINTMASS_HD static constexpr P position(const P& p0, const V& v0, const V& v1, const A&,
+                                           const T& t, const F&) noexcept {
+    using R = scalar_t<T>;
+    return p0 + (v0 + v1) * (t * R(0.5));
+  }
+};
+
 namespace detail {
 
 /// Factors an exact position can use: phi1 and phi2 of the step (damping::Exact's), or none
@@ -139,6 +169,45 @@ struct Exact {
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
+namespace detail {
+
+/// True for a position policy whose body keeps a credited half kick (VelocityVerlet).
+template <class P>
+inline constexpr bool kicks_v = requires {
+  requires P::kicks;
+};
+
+/// v0 damped over a step: by the factors' retention (d^t, or d per frame), or not at all.
+template <class V, class F>
+POINTMASS_HD constexpr V retained(const V& v0, const F& factors) noexcept {
+  if constexpr (std::is_empty_v<F>) {
+    static_cast<void>(factors);
+    return v0;
+  } else {
+    return v0 * factors.kept;
+  }
+}
+
+}  // namespace detail
+
+/// One step of a kicked position policy (position::VelocityVerlet) on one body's values:
+/// `kick` is the half kick the velocity took on credit at the last step, `last_half` that
+/// step's length / 2 (both 0 before the first step). Generic arithmetic, as integrate<D, P>.
+template <class D, class P, class Position, class Velocity, class Acceleration, class Time,
+          class Factors>
+POINTMASS_HD constexpr void integrate_kicked(Position& p, Velocity& v, Velocity& kick,
+                                             const Acceleration& a, const Time& t,
+                                             const Time& last_half,
+                                             const Factors& factors) noexcept {
+  using R = scalar_t<Time>;
+  const Time half = t * R(0.5);
+  const Velocity v0 = v - kick + a * (last_half + half);  // the credit settled, half a kick
+  const Velocity v1 = detail::retained(v0, factors);
+  kick = a * half;
+  v = v1 + kick;
+  p = P::position(p, v0, v1, a, t, factors);
+}
+
 /// True when the pair (D, P) steps exactly along the continuous model for constant
 /// acceleration at any step length (its error is rounding only): (None, ConstantAcceleration),
 /// (None, Exact) and (Exact, Exact).
@@ -151,17 +220,35 @@ inline constexpr bool is_exact_for_constant_acceleration_v = requires {
 
 /// The pair's global order of accuracy against the continuous model when the acceleration
 /// varies over a step (a spring): the lower of the two policies' orders (1 where a policy
-/// does not state one).
+/// does not state one); a kicked policy's own (VelocityVerlet: 2), whose step damps by the
+/// exact retention between its drifts instead of the damping policy's velocity update.
 template <class D, class P>
-inline constexpr int order_v = detail::stated_order<D>() < detail::stated_order<P>()
+inline constexpr int order_v = detail::kicks_v<P> ? detail::stated_order<P>()
+                               : detail::stated_order<D>() < detail::stated_order<P>()
                                    ? detail::stated_order<D>()
                                    : detail::stated_order<P>();
+
+namespace detail {
+
+/// A damping policy a kicked step (VelocityVerlet) damps with: none, or a retention d^t (or d)
+/// in its factors, applied between the drifts. Not AccelerateThenDamp: its order is Cyclone's.
+template <class D>
+inline constexpr bool damps_by_retention_v = std::is_same_v<D, damping::None> ||
+                                             (!std::is_same_v<D, damping::AccelerateThenDamp> &&
+                                              requires(const damping_factors_t<D, float>& f) {
+                                                f.kept;
+                                              });
+
+}  // namespace detail
 
 /// A position policy usable with damping policy D (checked for float and double).
 template <class P, class D>
 concept PositionPolicyFor = DampingPolicy<D> &&
-    requires(const Vector3<float>& vf, float tf, const damping_factors_t<D, float>& ff,
-             const Vector3<double>& vd, double td, const damping_factors_t<D, double>& fd) {
+    (!detail::kicks_v<P> ||
+     detail::damps_by_retention_v<D>)&&requires(const Vector3<float>& vf, float tf,
+                                                const damping_factors_t<D, float>& ff,
+                                                const Vector3<double>& vd, double td,
+                                                const damping_factors_t<D, double>& fd) {
   { P::position(vf, vf, vf, vf, tf, ff) } -> std::same_as<Vector3<float>>;
   { P::position(vd, vd, vd, vd, td, fd) } -> std::same_as<Vector3<double>>;
 };
@@ -177,7 +264,12 @@ template <class D, class P>
 constexpr bool check_policy_pair() {
   // A plain bool, so that the compiler prints the sentence and not the unmet constraints.
   constexpr bool fits = PositionPolicyFor<P, D>;
-  if constexpr (std::is_same_v<P, position::Exact>) {
+  if constexpr (kicks_v<P>) {
+    static_assert(fits,
+                  "position::VelocityVerlet works with damping::None, PerSecond, PerFrame and "
+                  "Exact (the step's retention between its drifts); AccelerateThenDamp is "
+                  "Cyclone's order of acceleration and damping, which a Verlet step is not");
+  } else if constexpr (std::is_same_v<P, position::Exact>) {
     static_assert(fits,
                   "position::Exact works only with damping::Exact or damping::None; with "
                   "damping::PerSecond, PerFrame or AccelerateThenDamp choose position::Euler, "

@@ -99,7 +99,7 @@ TEST_CASE_TEMPLATE("every combination converges to its continuous model at its o
 
 TEST_CASE("the error bounds are not vacuous on any scene: a run twice as wrong fails") {
   // A bound far above every error would pass a broken integrator too. On every convergence
-  // scene, for every first-order combination:
+  // scene, for every combination (the float term: every first-order one):
   //   * double, every frame time: the error is at least a quarter of its convergence bound
   //     (so a run with twice the error of the true method fails at the next halving);
   //   * float, at 1/30 s on every scene and at every frame time on the springs: the rounding
@@ -119,6 +119,9 @@ TEST_CASE("the error bounds are not vacuous on any scene: a run twice as wrong f
              " m, float rounding term ", e.rounding[i], " m");
         // (At the coarsest step the bound is made from this error itself: nothing to check.)
         if (i > 0) CHECK(e.doubles[i] >= bound / 4);
+        // (A second-order step's truncation error falls below float's rounding: its float
+        // runs are held by the rounding term alone, in check_scene.)
+        if (order_v < D, P >> 1) continue;
         if (s.has_spring()) {
           CHECK(e.rounding[i] <= e.doubles[i] / 2);
         } else if (i == 0) {

@@ -48,7 +48,11 @@ using AllPairs = std::tuple<
     Config<R, damping::AccelerateThenDamp, position::SemiImplicit>,
     Config<R, damping::Exact, position::Euler>,
     Config<R, damping::Exact, position::ConstantAcceleration>,
-    Config<R, damping::Exact, position::SemiImplicit>, Config<R, damping::Exact, position::Exact>>;
+    Config<R, damping::Exact, position::SemiImplicit>, Config<R, damping::Exact, position::Exact>,
+    Config<R, damping::None, position::VelocityVerlet>,
+    Config<R, damping::PerFrame, position::VelocityVerlet>,
+    Config<R, damping::PerSecond, position::VelocityVerlet>,
+    Config<R, damping::Exact, position::VelocityVerlet>>;
 
 template <class... A, class... B>
 auto concatenate(std::tuple<A...>, std::tuple<B...>) -> std::tuple<A..., B...>;

@@ -310,7 +310,7 @@ TEST_CASE("a feature not chosen costs nothing: the configurations' bytes and arr
   // The raw arrays gain pointers for the new columns (nullptr, never walked), nothing for
   // absent user columns; the system object gains nothing for absent handles.
   using Lean = ParticleSystem<float>;
-  static_assert(sizeof(Lean::StepView::Arrays) == 27 * sizeof(float*) + sizeof(std::size_t));
+  static_assert(sizeof(Lean::StepView::Arrays) == 30 * sizeof(float*) + sizeof(std::size_t));
   // The object beside its arrays: block pointer and capacity, two flags, d and ln d (hi, lo),
   // the acceleration: 48 bytes on a 64-bit target, as before (measured on the commit before);
   // and the last step's length and its factor d^t, kept for the next step of that length: 8.
@@ -321,4 +321,20 @@ TEST_CASE("a feature not chosen costs nothing: the configurations' bytes and arr
                                features::Interpolation>::storage_bytes_per_particle == 36);
   static_assert(ParticleSystem<double, damping::None, position::Euler,
                                features::Handles>::storage_bytes_per_particle == 52);
+}
+
+TEST_CASE("VelocityVerlet adds its kick columns and nothing else") {
+  // The credited half kick, one number per axis (position.hpp); the last half step is one
+  // number for the whole system.
+  using Semi = ParticleSystem<float, damping::PerSecond, position::SemiImplicit,
+                              features::ForceAccumulator>;
+  using Verlet = ParticleSystem<float, damping::PerSecond, position::VelocityVerlet,
+                                features::ForceAccumulator>;
+  static_assert(Verlet::storage_bytes_per_particle == Semi::storage_bytes_per_particle + 12);
+  static_assert(Verlet::stores<Column::kick_x> && !Semi::stores<Column::kick_x>);
+  Verlet system(4);
+  system.spawn({}, {});
+  system.set_acceleration({0.0f, -10.0f, 0.0f});
+  system.step(0.1f);
+  CHECK(system.column<Column::kick_y>()[0] == -0.5f);  // a t / 2
 }

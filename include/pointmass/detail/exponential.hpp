@@ -44,6 +44,7 @@
 // build on it).
 #pragma once
 
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 
@@ -122,6 +123,21 @@ POINTMASS_HD constexpr R select_if_less(R a, R b, R if_less, R otherwise) noexce
     return a < b ? if_less : otherwise;
   } else {
     return mask_select(less_mask(a + R(0), b + R(0)), if_less, otherwise);  // -0 + 0 = +0
+  }
+}
+
+/// condition ? if_true : if_false, as bit operations (g++ -O2 does not if-convert `?:` in the
+/// batch's step loop).
+template <class T>
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr T select_if(bool condition, T if_true,
+                                                                  T if_false) noexcept {
+  if constexpr (sizeof(T) == 4 || sizeof(T) == 8) {
+    using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    const Bits mask = Bits(0) - static_cast<Bits>(condition);
+    return __builtin_bit_cast(T, static_cast<Bits>((__builtin_bit_cast(Bits, if_true) & mask) |
+                                                   (__builtin_bit_cast(Bits, if_false) & ~mask)));
+  } else {
+    return condition ? if_true : if_false;
   }
 }
 

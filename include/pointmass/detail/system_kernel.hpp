@@ -79,6 +79,9 @@ class SystemKernel {
                                              damping_factors>
         factors{};
     Vector3<R> acceleration{};
+    /// A kicked position policy's last step length / 2 (position::VelocityVerlet; 0 before
+    /// the first step), which settles the kick credited then.
+    R last_half{};
     /// With the damping_retention column (features.hpp): compute each particle's retention
     /// for this duration into the column, before its step. True unless the system knows the column
     /// holds d^t for this duration already (ParticleSystem::step_parameters says), so a
@@ -190,6 +193,11 @@ class SystemKernel {
       ay = parameters.acceleration.y;
       az = parameters.acceleration.z;
     }
+    const R h = parameters.last_half;  // (0 unless the position policy kicks)
+    R no_kick = R(0);                  // the kick of a policy that keeps none: never read
+    R& kx = kick_of(arrays.kick_x, i, no_kick);
+    R& ky = kick_of(arrays.kick_y, i, no_kick);
+    R& kz = kick_of(arrays.kick_z, i, no_kick);
     if constexpr (!plain_positions) {  // stored wider or compensated (precision.hpp)
       bool movable = true;
       if constexpr (Layout::has_forces) {
@@ -197,28 +205,28 @@ class SystemKernel {
         movable = inverse_mass > R(0);
       }
       integrate_stored_if(movable, arrays.position_x[i], arrays.position_error_x, i,
-                          arrays.velocity_x[i], ax, t, factors);
+                          arrays.velocity_x[i], kx, ax, t, h, factors);
       integrate_stored_if(movable, arrays.position_y[i], arrays.position_error_y, i,
-                          arrays.velocity_y[i], ay, t, factors);
+                          arrays.velocity_y[i], ky, ay, t, h, factors);
       integrate_stored_if(movable, arrays.position_z[i], arrays.position_error_z, i,
-                          arrays.velocity_z[i], az, t, factors);
+                          arrays.velocity_z[i], kz, az, t, h, factors);
     } else if constexpr (Layout::has_forces && AllMovable) {
       apply_forces(arrays, i, ax, ay, az);
-      integrate<D, P>(arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
-      integrate<D, P>(arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
-      integrate<D, P>(arrays.position_z[i], arrays.velocity_z[i], az, t, factors);
+      integrate_component<D, P>(arrays.position_x[i], arrays.velocity_x[i], kx, ax, t, h, factors);
+      integrate_component<D, P>(arrays.position_y[i], arrays.velocity_y[i], ky, ay, t, h, factors);
+      integrate_component<D, P>(arrays.position_z[i], arrays.velocity_z[i], kz, az, t, h, factors);
     } else if constexpr (Layout::has_forces) {
       const R inverse_mass = apply_forces(arrays, i, ax, ay, az);
-      integrate_if_movable(inverse_mass, arrays.position_x[i], arrays.velocity_x[i], ax, t,
+      integrate_if_movable(inverse_mass, arrays.position_x[i], arrays.velocity_x[i], kx, ax, t, h,
                            factors);
-      integrate_if_movable(inverse_mass, arrays.position_y[i], arrays.velocity_y[i], ay, t,
+      integrate_if_movable(inverse_mass, arrays.position_y[i], arrays.velocity_y[i], ky, ay, t, h,
                            factors);
-      integrate_if_movable(inverse_mass, arrays.position_z[i], arrays.velocity_z[i], az, t,
+      integrate_if_movable(inverse_mass, arrays.position_z[i], arrays.velocity_z[i], kz, az, t, h,
                            factors);
     } else {
-      integrate<D, P>(arrays.position_x[i], arrays.velocity_x[i], ax, t, factors);
-      integrate<D, P>(arrays.position_y[i], arrays.velocity_y[i], ay, t, factors);
-      integrate<D, P>(arrays.position_z[i], arrays.velocity_z[i], az, t, factors);
+      integrate_component<D, P>(arrays.position_x[i], arrays.velocity_x[i], kx, ax, t, h, factors);
+      integrate_component<D, P>(arrays.position_y[i], arrays.velocity_y[i], ky, ay, t, h, factors);
+      integrate_component<D, P>(arrays.position_z[i], arrays.velocity_z[i], kz, az, t, h, factors);
     }
     if constexpr (Layout::has_lifetime) count_age(arrays.age[i], arrays.age_error[i], t);
   }
@@ -379,22 +387,33 @@ class SystemKernel {
   // do, where a branch is not. The mask comes from sign bits (detail::select_if_less): g++ -O2
   // has no SSE2 pattern for a 64-bit mask from a double comparison, so a `bool` made into a
   // mask left double systems with forces scalar there.
-  template <class F>
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void integrate_if_movable(
-      R inverse_mass, R& p, R& v, R a, R t, const F& factors) noexcept {
-    R p1 = p;
-    R v1 = v;
-    integrate<D, P>(p1, v1, a, t, factors);
-    p = select_if_less(R(0), inverse_mass, p1, p);
-    v = select_if_less(R(0), inverse_mass, v1, v);
+  // Particle i's element of a kick column, or `none` where the policy keeps no kick.
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr R& kick_of(R* column, std::size_t i,
+                                                                          R& none) noexcept {
+    if constexpr (Layout::has_kicks) return column[i];
+    static_cast<void>(column);
+    static_cast<void>(i);
+    return none;
   }
 
-  // advance_if for a position stored wider or compensated; `error` is the error column
-  // (nullptr unless compensated).
+  template <class F>
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void integrate_if_movable(
+      R inverse_mass, R& p, R& v, R& kick, R a, R t, R last_half, const F& factors) noexcept {
+    R p1 = p;
+    R v1 = v;
+    R kick1 = kick;
+    integrate_component<D, P>(p1, v1, kick1, a, t, last_half, factors);
+    p = select_if_less(R(0), inverse_mass, p1, p);
+    v = select_if_less(R(0), inverse_mass, v1, v);
+    if constexpr (Layout::has_kicks) kick = select_if_less(R(0), inverse_mass, kick1, kick);
+  }
+
+  // integrate_if_movable for a position stored wider or compensated; `error` is the error
+  // column (nullptr unless compensated).
   template <class F>
   POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void integrate_stored_if(
-      bool movable, position_element& p, R* error, std::size_t i, R& v, R a, R t,
-      const F& factors) noexcept {
+      bool movable, position_element& p, R* error, std::size_t i, R& v, R& kick, R a, R t,
+      R last_half, const F& factors) noexcept {
     if constexpr (!Layout::has_forces) {
       // Every particle is movable: stepped in place, so that integrate stores the velocity
       // before it computes the displacement from v0, which then cannot be loaded from memory
@@ -405,32 +424,20 @@ class SystemKernel {
         if constexpr (Layout::compensated_positions) return error[i];
         else return no_error;
       }();
-      integrate_stored<D, P, position_storage>(p, lo, v, a, t, factors);
+      integrate_stored<D, P, position_storage>(p, lo, v, kick, a, t, last_half, factors);
       return;
     }
     position_element p1 = p;
     R v1 = v;
+    R kick1 = kick;
     R lo = R(0);
     if constexpr (Layout::compensated_positions) lo = error[i];
     R lo1 = lo;
-    integrate_stored<D, P, position_storage>(p1, lo1, v1, a, t, factors);
-    p = select(movable, p1, p);
-    v = select(movable, v1, v);
-    if constexpr (Layout::compensated_positions) error[i] = select(movable, lo1, lo);
-  }
-
-  // condition ? if_true : if_false, as bit operations (g++ -O2 does not if-convert `?:` here).
-  template <class T>
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr T select(bool condition, T if_true,
-                                                                        T if_false) noexcept {
-    if constexpr (sizeof(T) == 4 || sizeof(T) == 8) {
-      using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
-      const Bits mask = Bits(0) - static_cast<Bits>(condition);
-      return __builtin_bit_cast(T, static_cast<Bits>((__builtin_bit_cast(Bits, if_true) & mask) |
-                                                     (__builtin_bit_cast(Bits, if_false) & ~mask)));
-    } else {
-      return condition ? if_true : if_false;
-    }
+    integrate_stored<D, P, position_storage>(p1, lo1, v1, kick1, a, t, last_half, factors);
+    p = select_if(movable, p1, p);
+    v = select_if(movable, v1, v);
+    if constexpr (Layout::has_kicks) kick = select_if(movable, kick1, kick);
+    if constexpr (Layout::compensated_positions) error[i] = select_if(movable, lo1, lo);
   }
 };
 

@@ -44,7 +44,8 @@ template <class S, DampingPolicy D, class P, class... Features>
 class SystemState {
  protected:
   using R = real_of_t<S>;
-  using Layout = SystemLayout<S, D, Features...>;
+  using Layout = std::conditional_t<kicks_v<P>, SystemLayout<S, D, Features..., Kicks>,
+                                    SystemLayout<S, D, Features...>>;
   using Kernel = SystemKernel<R, D, P, Layout>;
   using Storage = typename Layout::position_storage;
   using Block = SoaBlock<Layout>;
@@ -87,7 +88,8 @@ class SystemState {
         acceleration_(other.acceleration_),
         handles_(other.handles_),
         retention_duration_(other.retention_duration_),
-        kept_(other.kept_) {}
+        kept_(other.kept_),
+        last_half_(other.last_half_) {}
   SystemState(SystemState&& other) noexcept
       : block_(std::move(other.block_)),
         backward_(std::exchange(other.backward_, false)),
@@ -95,7 +97,8 @@ class SystemState {
         acceleration_(other.acceleration_),
         handles_(std::move(other.handles_)),
         retention_duration_(other.retention_duration_),
-        kept_(other.kept_) {
+        kept_(other.kept_),
+        last_half_(other.last_half_) {
     ++other.replacements_;  // its particles left with the move
   }
 
@@ -114,6 +117,7 @@ class SystemState {
     std::swap(handles_, other.handles_);
     std::swap(retention_duration_, other.retention_duration_);
     std::swap(kept_, other.kept_);
+    std::swap(last_half_, other.last_half_);
     ++replacements_;
     ++other.replacements_;
   }
@@ -132,6 +136,9 @@ class SystemState {
   // -1: none.
   R retention_duration_ = R(-1);
   [[no_unique_address]] std::conditional_t<keeps_factors, KeptFactors<D, R>, NoKeptFactors> kept_{};
+  struct NoHalf {};
+  // A kicked position policy's last step length / 2 (StepParameters::last_half); 0 at first.
+  [[no_unique_address]] std::conditional_t<Layout::has_kicks, R, NoHalf> last_half_{};
 
   // --- size and capacity ---------------------------------------------------------------------
 
@@ -242,6 +249,7 @@ class SystemState {
       a.age_error[i] = R(0);
       a.lifetime[i] = real_infinity<R>;
     }
+    if constexpr (Layout::has_kicks) store(a.kick_x, a.kick_y, a.kick_z, i, {});
     store_user_columns(i, columns, std::make_index_sequence<user_column_count>{});
     return i;
   }
@@ -265,11 +273,23 @@ class SystemState {
       store(a.force_x, a.force_y, a.force_z, i, particle.force_accumulator());
     }
     if constexpr (Layout::per_particle_damping) store_damping(i, damping_state(particle.damping()));
+    // (the system's last step length settles it: ParticleSystem::spawn(particle))
+    if constexpr (Layout::has_kicks)
+      store(a.kick_x, a.kick_y, a.kick_z, i, particle.credited_kick());
   }
   // Particle i's damping state, and its retention for retention_duration_ (the same
   // function and inputs as the step's refresh, so the same bits).
   void store_damping(std::size_t i, const damping_state& state) noexcept {
-    Layout::store_damping(arrays(), i, state);
+    const Arrays& a = arrays();
+    if constexpr (Layout::value_damping_state) {
+      a.damping[i] = state.value();
+    } else {
+      a.damping[i] = state;
+    }
+    if constexpr (Layout::log_damping_state) {
+      a.damping_log_hi[i] = state.split_log().hi;
+      a.damping_log_lo[i] = state.split_log().lo;
+    }
     if constexpr (Layout::per_particle_retention) {
       if (retention_duration_ >= R(0)) Kernel::refresh_retention(arrays(), i, retention_duration_);
     }
