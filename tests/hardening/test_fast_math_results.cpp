@@ -10,6 +10,7 @@
 
 #include <pointmass/pointmass.hpp>
 
+#include "log_oracle.hpp"
 #include "ulp.hpp"
 
 using namespace pointmass;
@@ -128,6 +129,27 @@ TEST_CASE_TEMPLATE("the exponential keeps its ulp bound", R, float, double) {
 #endif
   CAPTURE(worst);
   CHECK(worst <= stated_ulps);
+}
+
+TEST_CASE("split_log for double is ln d to 2^-72 against correctly rounded values") {
+  double worst = 0;
+  for (const pointmass::test::LogOracle& oracle : pointmass::test::log_oracle_double) {
+    if (oracle.d < std::numeric_limits<double>::min()) continue;  // -ffast-math reads 0
+    const auto ln_d = detail::split_log(opaque(oracle.d));
+    const double error =
+        std::fabs((ln_d.hi - oracle.hi) + (ln_d.lo - oracle.lo)) / std::fabs(oracle.hi);
+    worst = error > worst ? error : worst;
+  }
+  CAPTURE(worst);
+  CHECK(worst <= 0x1p-72);
+}
+
+TEST_CASE("an offset rounded once to float: a double position at a float midpoint") {
+  // 1 + 2^-24 - (-2^-80): the double difference rounds to the midpoint 1 + 2^-24, and its
+  // error term (2^-80) says which float is nearer: 1 + 2^-23.
+  Particle<Precision<float, double>, damping::None> particle;
+  particle.set_position({opaque(1.0 + 0x1p-24), 0.0, 0.0});
+  CHECK(particle.position_relative_to({opaque(-0x1p-80), 0.0, 0.0}).x == 1.0f + 0x1p-23f);
 }
 
 TEST_CASE("a far compensated position's offset from a camera is exact") {
