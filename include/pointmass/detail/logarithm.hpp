@@ -107,7 +107,6 @@ struct DoubleDouble {
 
 /// a + b as s + e, exactly (Knuth's TwoSum: whatever the magnitudes).
 POINTMASS_HD constexpr DoubleDouble two_sum(double a, double b) noexcept {
-  POINTMASS_DETAIL_IN_ORDER  // reordered, the error would be 0 (real.hpp)
   const double s = a + b;
   const double b_virtual = s - a;
   const double a_virtual = s - b_virtual;
@@ -153,7 +152,6 @@ POINTMASS_HD constexpr DoubleDouble dd_mul(DoubleDouble x, DoubleDouble y) noexc
 
 /// 1 / n as a double-double (n a small odd integer): the quotient and its remainder's.
 POINTMASS_HD constexpr DoubleDouble dd_reciprocal(double n) noexcept {
-  POINTMASS_DETAIL_IN_ORDER  // 1 - p.hi exact, then p.lo (real.hpp)
   const double q = 1.0 / n;
   const DoubleDouble p = two_product(q, n);
   return {q, ((1.0 - p.hi) - p.lo) / n};
