@@ -36,7 +36,7 @@
 // tests/test_exponential.cpp checks the bounds).
 //
 // It relies on IEEE arithmetic rounding to nearest, in the order written (under
-// -fassociative-math: POINTMASS_DETAIL_IN_ORDER, real.hpp). Fused multiply-adds, where the
+// -fassociative-math: POINTMASS_DETAIL_IN_ORDER, config.hpp). Fused multiply-adds, where the
 // compiler contracts, only make the steps more accurate.
 //
 // Owns: the library's own exponential and d^t, the branch-free selects, and the phi series.
