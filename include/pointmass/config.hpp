@@ -92,6 +92,23 @@
 #define POINTMASS_DETAIL_ALWAYS_INLINE
 #endif
 
+// The error-free steps (TwoSum, Fast2Sum, rounding to an integer by adding 1.5 * 2^(p-1))
+// hold only in the order they are written: -fassociative-math (part of -ffast-math) lets the
+// compiler simplify (a + b) - a to b and so cancel them (d^t would be 1; a far compensated
+// position would never move). clang, which names no macro for the flag, keeps the order of every
+// function body that begins with POINTMASS_DETAIL_IN_ORDER (a pragma; a no-op in ordinary
+// builds). g++ names it (__ASSOCIATIVE_MATH__) but has no barrier that its vectoriser keeps
+// (__builtin_assoc_barrier is lost where it vectorises a Particle's x and y): refused.
+#if defined(__clang__)
+#define POINTMASS_DETAIL_IN_ORDER _Pragma("clang fp reassociate(off)")
+#else
+#define POINTMASS_DETAIL_IN_ORDER
+#endif
+#if defined(__ASSOCIATIVE_MATH__) && !defined(__clang__)
+#error \
+    "pointmass: -fassociative-math (part of -ffast-math) reorders the library's exact sums and breaks damping and compensated positions: add -fno-associative-math"
+#endif
+
 namespace pointmass {
 
 /// Room for ContractViolation::text at its longest, three long doubles: each with a sign, a

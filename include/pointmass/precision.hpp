@@ -282,6 +282,7 @@ struct PositionStorage {
     } else if constexpr (std::numeric_limits<element>::digits == std::numeric_limits<T>::digits) {
       return static_cast<T>(p - origin);
     } else {
+      POINTMASS_DETAIL_IN_ORDER  // TwoSum: reordered, e would be 0 (config.hpp)
       const element s = p - origin;
       const element b = s - p;
       const element e = (p - (s - b)) + (-origin - b);
@@ -315,6 +316,7 @@ struct PositionStorage<Compensated<R>> {
   /// adds it to hi and leaves in lo what the new hi could not hold: exactly when hi's
   /// exponent is at least y's (s - hi is then exact), and within an ulp of y otherwise.
   POINTMASS_HD static constexpr void add(R& hi, R& lo, R d) noexcept {
+    POINTMASS_DETAIL_IN_ORDER  // Fast2Sum: reordered, lo would be 0 (config.hpp)
     const R y = d + lo;
     const R s = hi + y;
     lo = y - (s - hi);
@@ -354,6 +356,7 @@ struct PositionStorage<Compensated<R>> {
   /// does the same.
   template <Real T = float, bool BranchFree = false>
   POINTMASS_HD static constexpr T relative(R hi, R lo, value origin) noexcept {
+    POINTMASS_DETAIL_IN_ORDER  // TwoSums: reordered, their errors would be 0 (config.hpp)
     if constexpr (std::numeric_limits<value>::digits < std::numeric_limits<T>::digits) {
       // T wider than the pair's value: hi + lo is a T (as it is a value), and the difference
       // in T is rounded once there.

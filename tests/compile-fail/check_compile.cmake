@@ -15,8 +15,10 @@ foreach(dir IN LISTS system_dirs)
   endif()
 endforeach()
 
+string(REPLACE "|" ";" extra_flags "${EXTRA_FLAGS}")  # optional: flags of the snippet's own
+
 execute_process(
-  COMMAND "${COMPILER}" -std=c++20 -fsyntax-only
+  COMMAND "${COMPILER}" -std=c++20 -fsyntax-only ${extra_flags}
           -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wdouble-promotion -Werror
           ${include_flags} ${system_flags} "${SOURCE}"
   RESULT_VARIABLE result

@@ -47,3 +47,19 @@ TEST_CASE_TEMPLATE("validation holds under -ffast-math", R, float, double) {
   CHECK_THROWS_AS(system.set_damping(nan), std::invalid_argument);
   CHECK(system.size() == 0);
 }
+
+TEST_CASE_TEMPLATE("infinite masses and lifetimes hold under -ffast-math", R, float, double) {
+  Particle<R> immovable;
+  immovable.set_inverse_mass(opaque(R(0)));
+  immovable.add_force({R(1), R(0), R(0)});
+  immovable.integrate(opaque(R(0.5)));
+  CHECK(immovable.position() == Vector3<R>{});
+  CHECK_FALSE(immovable.has_finite_mass());
+  CHECK_FALSE(real_isfinite(immovable.mass()));
+
+  ParticleSystem<R, damping::None, position::Euler, features::Lifetime> system;
+  system.spawn({}, {R(1), R(0), R(0)});
+  system.set_lifetime(0, opaque(std::numeric_limits<R>::infinity()));
+  for (int frame = 0; frame < 10; ++frame) system.step(opaque(R(1000)));
+  CHECK(system.size() == 1);
+}

@@ -326,8 +326,8 @@ TEST_CASE("a feature not chosen costs nothing: the configurations' bytes and arr
 TEST_CASE("VelocityVerlet adds its kick columns and nothing else") {
   // The credited half kick, one number per axis (position.hpp); the last half step is one
   // number for the whole system.
-  using Semi = ParticleSystem<float, damping::PerSecond, position::SemiImplicit,
-                              features::ForceAccumulator>;
+  using Semi =
+      ParticleSystem<float, damping::PerSecond, position::SemiImplicit, features::ForceAccumulator>;
   using Verlet = ParticleSystem<float, damping::PerSecond, position::VelocityVerlet,
                                 features::ForceAccumulator>;
   static_assert(Verlet::storage_bytes_per_particle == Semi::storage_bytes_per_particle + 12);

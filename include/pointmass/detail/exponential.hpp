@@ -35,9 +35,9 @@
 // docs/results/numerics.md (scripts/exponential-accuracy.sh writes it;
 // tests/test_exponential.cpp checks the bounds).
 //
-// It relies on IEEE arithmetic rounding to nearest: not valid under -ffast-math (which may
-// reassociate the shifter trick away). Fused multiply-adds, where the compiler contracts,
-// only make the steps more accurate.
+// It relies on IEEE arithmetic rounding to nearest, in the order written (under
+// -fassociative-math: POINTMASS_DETAIL_IN_ORDER, config.hpp). Fused multiply-adds, where the
+// compiler contracts, only make the steps more accurate.
 //
 // Owns: the library's own exponential and d^t, the branch-free selects, and the phi series.
 // Must not include: anything but config.hpp, real.hpp and detail/logarithm.hpp (the policies
@@ -163,6 +163,7 @@ POINTMASS_HD constexpr R power_of_two(R m) noexcept {
 template <class R>
 POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr ExpReduced<R> exp_reduce(R x_hi,
                                                                                R x_lo) noexcept {
+  POINTMASS_DETAIL_IN_ORDER  // every step below is error-free only in this order
   using T = ExpTraits<R>;
   // Clamp (NaN passes through); a clamped x drops its low part.
   using B = typename T::bits;
@@ -296,6 +297,7 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R pow_unit_scalar(const Sp
   if constexpr (wider_than_double_v<R>) {
     return pow_unit(ln_d, t);
   } else {
+    POINTMASS_DETAIL_IN_ORDER  // exp_reduce's steps, error-free only in this order
     using T = ExpTraits<R>;
     // split_time(t) as branches (the same values).
     const R high = split_high(t);

@@ -115,6 +115,7 @@ POINTMASS_HD constexpr DoubleDouble two_sum(double a, double b) noexcept {
 
 /// a + b as s + e, exactly, where |a| >= |b| or a is 0 (Fast2Sum).
 POINTMASS_HD constexpr DoubleDouble fast_two_sum(double a, double b) noexcept {
+  POINTMASS_DETAIL_IN_ORDER  // reordered, the error would be 0 (config.hpp)
   const double s = a + b;
   return {s, b - (s - a)};
 }
@@ -125,6 +126,7 @@ POINTMASS_HD constexpr DoubleDouble fast_two_sum(double a, double b) noexcept {
 /// every partial product but lo * lo (27 bits by 27) is exact, so contraction changes at
 /// most that one's last bit.
 POINTMASS_HD constexpr DoubleDouble two_product(double a, double b) noexcept {
+  POINTMASS_DETAIL_IN_ORDER  // each partial sum exact only in this order (config.hpp)
   const double p = a * b;
   const double a_hi = split_high(a);
   const double a_lo = a - a_hi;
@@ -214,6 +216,7 @@ POINTMASS_HD constexpr double log_double(double d) noexcept {
 /// ln m = 2f + 2f^3 / 3 + 2f^5 / 5 + ... to f^31: f to f^7 / 7 in double-double, the rest
 /// (below 2^-23 of the sum) in double.
 POINTMASS_HD constexpr DoubleDouble log_double_double(double d) noexcept {
+  POINTMASS_DETAIL_IN_ORDER  // the remainder's steps are exact only in this order (config.hpp)
   const LogReduced a = log_reduce(d);
   // f = (m - 1) / (m + 1): m - 1 is exact (Sterbenz), m + 1 a TwoSum; the quotient, then
   // its remainder's quotient (both through one reciprocal).

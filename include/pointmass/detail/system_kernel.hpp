@@ -53,6 +53,7 @@ struct NoFactors {};
 // exact sum, so a float age of 2^20 s still grows by 1/60 s a step and expires on time.
 template <class R>
 POINTMASS_HD constexpr void count_age(R& age, R& error, R t) noexcept {
+  POINTMASS_DETAIL_IN_ORDER  // reordered, the error would be 0 (config.hpp)
   const R step = t + error;
   const R sum = age + step;
   error = step - (sum - age);  // exact while age >= step; 0 on the first step

@@ -412,7 +412,8 @@ void fuzz_particle(Input& in) {
 //
 // Operation sequences on a system, each checked against a reference model (the mirror): a
 // std::vector of the equivalent Particles, killed by the documented swap-remove, aged and
-// expired by the documented rule (age >= lifetime, and an infinite lifetime never expires).
+// expired by the documented rule (age >= lifetime, the age counted as Kahan's sum of the
+// steps, and an infinite lifetime never expires).
 // After every operation the system agrees with the mirror bit for bit: positions,
 // velocities, accelerations, inverse masses, forces, damping, ages, lifetimes, and with
 // features::Interpolation the previous positions (the stored position before the particle's
@@ -599,6 +600,7 @@ class Mirror {
 
   std::vector<Body> bodies;
   std::vector<R> ages;
+  std::vector<R> age_errors;  // the age is ages + age_errors, Kahan's sum of the steps
   std::vector<R> lifetimes;
   // features::Interpolation: each particle's stored position before its last step, or as
   // spawned or set since (a jump, not a motion to draw).
@@ -621,6 +623,7 @@ class Mirror {
   void push(const Body& body, int owner = 0) {
     bodies.push_back(body);
     ages.push_back(R(0));
+    age_errors.push_back(R(0));
     lifetimes.push_back(std::numeric_limits<R>::infinity());
     previous.push_back(body.stored_position());
     serials.push_back(next_serial++);
@@ -655,12 +658,14 @@ class Mirror {
   void kill(std::size_t i) {  // swap-remove
     bodies[i] = bodies.back();
     ages[i] = ages.back();
+    age_errors[i] = age_errors.back();
     lifetimes[i] = lifetimes.back();
     previous[i] = previous.back();
     serials[i] = serials.back();
     owners[i] = owners.back();
     bodies.pop_back();
     ages.pop_back();
+    age_errors.pop_back();
     lifetimes.pop_back();
     previous.pop_back();
     serials.pop_back();
@@ -676,7 +681,15 @@ class Mirror {
   void integrate(std::size_t i, R t) {
     previous[i] = bodies[i].stored_position();
     bodies[i].integrate(t);
-    ages[i] += t;
+    const R step = t + age_errors[i];
+    const R sum = ages[i] + step;
+    age_errors[i] = step - (sum - ages[i]);
+    ages[i] = sum;
+  }
+  // The age as age(i) reports it (NaN once the count overflowed: infinity).
+  [[nodiscard]] R age(std::size_t i) const {
+    const R sum = ages[i] + age_errors[i];
+    return std::isnan(sum) ? std::numeric_limits<R>::infinity() : sum;
   }
   static bool expired(R age, R lifetime) {
     return age >= lifetime && lifetime != std::numeric_limits<R>::infinity();
@@ -685,7 +698,7 @@ class Mirror {
     if constexpr (System::template has<pointmass::features::Lifetime>) {
       std::size_t i = 0;
       while (i < bodies.size()) {
-        if (expired(ages[i], lifetimes[i])) kill(i);
+        if (expired(age(i), lifetimes[i])) kill(i);
         else ++i;
       }
     }
@@ -754,7 +767,7 @@ void compare(const System& system, const Mirror<System>& mirror, const Budget& b
       require(identical(system.inverse_mass(i), body.inverse_mass()), "inverse mass differs");
     }
     if constexpr (System::template has<pointmass::features::Lifetime>) {
-      require(identical(system.age(i), mirror.ages[i]), "age differs");
+      require(identical(system.age(i), mirror.age(i)), "age differs");
       require(identical(system.lifetime(i), mirror.lifetimes[i]), "lifetime differs");
     }
     require(identical(system.damping(i), body.damping()), "damping differs");
