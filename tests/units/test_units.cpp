@@ -83,6 +83,9 @@ void check_all_positions(R frame, int steps) {
   if constexpr (pm::PositionPolicyFor<pm::position::Exact, D>) {
     check_same_trajectories<R, D, pm::position::Exact>(frame, steps);
   }
+  if constexpr (pm::PositionPolicyFor<pm::position::VelocityVerlet, D>) {
+    check_same_trajectories<R, D, pm::position::VelocityVerlet>(frame, steps);
+  }
 }
 
 }  // namespace
