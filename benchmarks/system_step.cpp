@@ -244,6 +244,13 @@ using WithLifetime = ParticleSystem<R, damping::PerSecond, position::Euler, feat
 template <class R>
 using WithForces =
     ParticleSystem<R, damping::PerSecond, position::Euler, features::ForceAccumulator>;
+// Force-driven particles, the step alone (the forces' apply is the same for both).
+template <class R>
+using ForcesSemiImplicit =
+    ParticleSystem<R, damping::PerSecond, position::SemiImplicit, features::ForceAccumulator>;
+template <class R>
+using ForcesVelocityVerlet =
+    ParticleSystem<R, damping::PerSecond, position::VelocityVerlet, features::ForceAccumulator>;
 template <class R>
 using WithAcceleration =
     ParticleSystem<R, damping::PerSecond, position::Euler, features::PerParticleAcceleration>;
@@ -291,6 +298,10 @@ BENCHMARK_TEMPLATE(BM_System, WithLifetime<float>)->Apply(middle);
 BENCHMARK_TEMPLATE(BM_System, WithForces<float>)->Apply(middle);
 BENCHMARK_TEMPLATE(BM_System, WithAcceleration<float>)->Apply(middle);
 BENCHMARK_TEMPLATE(BM_System, WithDamping<float>)->Apply(middle);
+// Second order under forces against SemiImplicit, side by side.
+void forces_sizes(benchmark::internal::Benchmark* b) { b->Arg(1000)->Arg(100000); }
+BENCHMARK_TEMPLATE(BM_System, ForcesSemiImplicit<float>)->Apply(forces_sizes);
+BENCHMARK_TEMPLATE(BM_System, ForcesVelocityVerlet<float>)->Apply(forces_sizes);
 
 // The renderer's hand-off (docs/results/hand-off.md): copying the positions out, after a step,
 // against the step itself, in the same run. Items: particles copied (or stepped).

@@ -1836,17 +1836,25 @@ using GameSystemConfigs = std::tuple<SystemConfig<
     ParticleSystem<R, damping::PerSecond, position::Euler, features::Lifetime,
                    features::Interpolation, features::Handles, features::Column<FuzzOwner, int>>>>;
 
+// The second-order step (its credited kick a column of its own); after the others, as above.
+template <class R>
+using VerletConfigs =
+    std::tuple<ParticleConfig<R, damping::PerSecond, position::VelocityVerlet>,
+               SystemConfig<ParticleSystem<R, damping::PerFrame, position::VelocityVerlet,
+                                           features::ForceAccumulator, features::Lifetime>>>;
+
 template <class... A, class... B>
 auto concatenate(std::tuple<A...>, std::tuple<B...>) -> std::tuple<A..., B...>;
-using Configs =
-    decltype(concatenate(concatenate(concatenate(std::declval<ParticleConfigs<float>>(),
-                                                 std::declval<ParticleConfigs<double>>()),
-                                     concatenate(std::declval<SystemConfigs<float>>(),
-                                                 std::declval<SystemConfigs<double>>())),
-                         concatenate(concatenate(std::declval<MoreSystemConfigs<float>>(),
-                                                 std::declval<MoreSystemConfigs<double>>()),
-                                     concatenate(std::declval<GameSystemConfigs<float>>(),
-                                                 std::declval<GameSystemConfigs<double>>()))));
+using Configs = decltype(concatenate(
+    concatenate(concatenate(concatenate(std::declval<ParticleConfigs<float>>(),
+                                        std::declval<ParticleConfigs<double>>()),
+                            concatenate(std::declval<SystemConfigs<float>>(),
+                                        std::declval<SystemConfigs<double>>())),
+                concatenate(concatenate(std::declval<MoreSystemConfigs<float>>(),
+                                        std::declval<MoreSystemConfigs<double>>()),
+                            concatenate(std::declval<GameSystemConfigs<float>>(),
+                                        std::declval<GameSystemConfigs<double>>()))),
+    concatenate(std::declval<VerletConfigs<float>>(), std::declval<VerletConfigs<double>>())));
 static_assert(std::tuple_size_v<Configs> <= 0xE0,
               "the first bytes from 0xE0 choose wide positions and the forces");
 
