@@ -45,6 +45,10 @@ double configurations() {
   sum += fly(Particle<Precision<float, Compensated<float>>, damping::Exact, position::Exact>{});
   sum += batch(ParticleSystem<float>{});
   sum += batch(ParticleSystem<double, damping::Exact, position::Exact>{});
+  sum += fly(Particle<float, damping::PerSecond, position::VelocityVerlet>{});
+  sum += batch(
+      ParticleSystem<Precision<float, Compensated<float>>, damping::PerSecond,
+                     position::VelocityVerlet, features::ForceAccumulator, features::Lifetime>{});
   sum += batch(ParticleSystem<Precision<float, double>, damping::PerSecond, position::SemiImplicit,
                               features::ForceAccumulator>{});
 
