@@ -104,6 +104,7 @@ enum class Column : unsigned char {
   kick_x,  ///< position::VelocityVerlet only: the half kick the velocity holds on credit
   kick_y,
   kick_z,
+  kick_half_step,  ///< position::VelocityVerlet only: the step length / 2 that credited it
 };
 
 /// A stable name of one particle of a ParticleSystem with features::BasicHandles<G> (see
@@ -120,7 +121,7 @@ namespace detail {
 template <class T, class... List>
 inline constexpr bool contains_v = (std::is_same_v<T, List> || ...);
 
-/// Not a user's feature: the layout of a system whose position policy kicks (kick_x, y, z).
+/// Not a user's feature: the layout of a system whose position policy kicks (the kick columns).
 struct Kicks {};
 
 template <class T>
@@ -253,7 +254,8 @@ T element_of(T* Class::*);
   X(handle_slot, std::uint32_t, has_handles)                  \
   X(kick_x, R, has_kicks)                                     \
   X(kick_y, R, has_kicks)                                     \
-  X(kick_z, R, has_kicks)
+  X(kick_z, R, has_kicks)                                     \
+  X(kick_half_step, R, has_kicks)
 
 #define POINTMASS_DETAIL_MEMBER(name, type, stored) type* name = nullptr;
 #define POINTMASS_DETAIL_ENTRY(name, type, stored) ColumnEntry<&Arrays::name, (stored)>{},

@@ -211,6 +211,11 @@ class BasicParticle {
       const noexcept requires kicks {
     return typed<velocity_type>(kick_.velocity);
   }
+  /// VelocityVerlet: the length / 2 of the step that credited it (0 before the first step).
+  [[nodiscard]] POINTMASS_HD constexpr time_type credited_half_step()
+      const noexcept requires kicks {
+    return Q::template make<time_type>(kick_.last_half);
+  }
   [[nodiscard]] POINTMASS_HD constexpr Vector3<acceleration_type> acceleration() const noexcept {
     return typed<acceleration_type>(acceleration_);
   }

@@ -426,7 +426,6 @@ class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D
     // A loop of the caller's may not have refreshed every particle's d^t: the next step
     // computes it again.
     State::forget_retention();
-    State::record_half(finished.parameters().duration);
     State::expire(on_expire, "finish_step");
   }
 };

@@ -109,7 +109,7 @@ struct SemiImplicit {
 /// damps by the step's retention, drifts t/2 and kicks t/2 on credit again:
 ///   v0 = v - kick + a (t_last / 2 + t / 2);   v1 = v0 d^t;   p1 = p0 + (v0 + v1) t / 2;
 ///   kick = a t / 2;   v = v1 + kick
-/// The body keeps the credited kick (a velocity) and t_last / 2: one more vector per particle.
+/// The body keeps the credited kick (a velocity) and t_last / 2: 4 more numbers per particle.
 /// Exact for constant acceleration without damping; exact for damping alone (v1 = v0 d^t).
 struct VelocityVerlet {
   /// Global order of accuracy against the continuous model.

@@ -310,7 +310,7 @@ TEST_CASE("a feature not chosen costs nothing: the configurations' bytes and arr
   // The raw arrays gain pointers for the new columns (nullptr, never walked), nothing for
   // absent user columns; the system object gains nothing for absent handles.
   using Lean = ParticleSystem<float>;
-  static_assert(sizeof(Lean::StepView::Arrays) == 30 * sizeof(float*) + sizeof(std::size_t));
+  static_assert(sizeof(Lean::StepView::Arrays) == 31 * sizeof(float*) + sizeof(std::size_t));
   // The object beside its arrays: block pointer and capacity, two flags, d and ln d (hi, lo),
   // the acceleration: 48 bytes on a 64-bit target, as before (measured on the commit before);
   // and the last step's length and its factor d^t, kept for the next step of that length: 8.
@@ -330,11 +330,45 @@ TEST_CASE("VelocityVerlet adds its kick columns and nothing else") {
       ParticleSystem<float, damping::PerSecond, position::SemiImplicit, features::ForceAccumulator>;
   using Verlet = ParticleSystem<float, damping::PerSecond, position::VelocityVerlet,
                                 features::ForceAccumulator>;
-  static_assert(Verlet::storage_bytes_per_particle == Semi::storage_bytes_per_particle + 12);
+  static_assert(Verlet::storage_bytes_per_particle == Semi::storage_bytes_per_particle + 16);
   static_assert(Verlet::stores<Column::kick_x> && !Semi::stores<Column::kick_x>);
   Verlet system(4);
   system.spawn({}, {});
   system.set_acceleration({0.0f, -10.0f, 0.0f});
   system.step(0.1f);
   CHECK(system.column<Column::kick_y>()[0] == -0.5f);  // a t / 2
+  CHECK(system.column<Column::kick_half_step>()[0] == 0.05f);
+}
+
+TEST_CASE("VelocityVerlet: a particle spawned into a running system steps as a new Particle") {
+  // Each particle settles the kick with the half step that credited it (0 for a new one), so
+  // a spark spawned after 10 steps, or made movable after being immovable, is the Particle.
+  using Body = Particle<float, damping::PerSecond, position::VelocityVerlet>;
+  ParticleSystem<float, damping::PerSecond, position::VelocityVerlet, features::ForceAccumulator>
+      system(4);
+  system.set_acceleration({0.0f, -9.8f, 0.0f});
+  Body early;
+  early.set_acceleration({0.0f, -9.8f, 0.0f});
+  system.spawn(early);
+  Body late = early;
+  Body pinned = early;
+  pinned.set_inverse_mass(0.0f);
+  system.spawn(pinned);
+  for (int n = 0; n < 10; ++n) {
+    early.integrate(1.0f / 60.0f);
+    pinned.integrate(1.0f / 60.0f);
+    system.step(1.0f / 60.0f);
+  }
+  system.spawn(late);
+  pinned.set_inverse_mass(1.0f);
+  system.set_inverse_mass(1, 1.0f);
+  for (int n = 0; n < 10; ++n) {
+    for (Body* body : {&early, &pinned, &late}) body->integrate(1.0f / 50.0f);
+    system.step(1.0f / 50.0f);
+  }
+  const Body* bodies[] = {&early, &pinned, &late};
+  for (std::size_t i = 0; i < 3; ++i) {
+    CHECK(same_bits(system.position(i), bodies[i]->position()));
+    CHECK(same_bits(system.velocity(i), bodies[i]->velocity()));
+  }
 }

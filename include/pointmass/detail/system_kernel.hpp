@@ -42,15 +42,14 @@
 #define POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
 #endif
 
-// The step kernel is inlined into its loop even at -O2 (POINTMASS_DETAIL_ALWAYS_INLINE), where
-// g++ would otherwise call the larger configurations' kernel and so not vectorise the loop.
+// The step kernel is inlined into its loop even at -O2 (POINTMASS_DETAIL_ALWAYS_INLINE): a call
+// stops vectorisation.
 
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 struct NoFactors {};
 
-// Adds a step of t to an age kept as age + error (Kahan's sum): the age counts the steps'
-// exact sum, so a float age of 2^20 s still grows by 1/60 s a step and expires on time.
+// Adds a step of t to an age kept as age + error (Kahan's sum): the steps' exact sum.
 template <class R>
 POINTMASS_HD constexpr void count_age(R& age, R& error, R t) noexcept {
   POINTMASS_DETAIL_IN_ORDER  // reordered, the error would be 0 (config.hpp)
@@ -66,23 +65,18 @@ class SystemKernel {
  public:
   using Arrays = typename Layout::Arrays;
   using damping_factors = damping_factors_t<D, R>;
-  /// How positions are stored (precision.hpp): R as today, a wider Real, or Compensated<R>.
   using position_storage = typename Layout::position_storage;
   using position_element = typename Layout::position_element;
   static constexpr bool plain_positions =
       std::is_same_v<position_element, R> && !Layout::compensated_positions;
 
-  /// What every particle's step shares: the duration, the uniform damping factors
-  /// and the uniform acceleration, where the configuration has them.
+  /// What every particle's step shares: the duration, uniform damping factors and acceleration.
   struct StepParameters {
     R duration{};
     [[no_unique_address]] std::conditional_t<Layout::per_particle_damping, NoFactors,
                                              damping_factors>
         factors{};
     Vector3<R> acceleration{};
-    /// A kicked position policy's last step length / 2 (position::VelocityVerlet; 0 before
-    /// the first step), which settles the kick credited then.
-    R last_half{};
     /// With the damping_retention column (features.hpp): compute each particle's retention
     /// for this duration into the column, before its step. True unless the system knows the column
     /// holds d^t for this duration already (ParticleSystem::step_parameters says), so a
@@ -194,11 +188,15 @@ class SystemKernel {
       ay = parameters.acceleration.y;
       az = parameters.acceleration.z;
     }
-    const R h = parameters.last_half;  // (0 unless the position policy kicks)
-    R no_kick = R(0);                  // the kick of a policy that keeps none: never read
-    R& kx = kick_of(arrays.kick_x, i, no_kick);
-    R& ky = kick_of(arrays.kick_y, i, no_kick);
-    R& kz = kick_of(arrays.kick_z, i, no_kick);
+    R none = R(0);  // every kick of a policy that keeps none: 0, never written
+    R& kx = kick_of(arrays.kick_x, i, none);
+    R& ky = kick_of(arrays.kick_y, i, none);
+    R& kz = kick_of(arrays.kick_z, i, none);
+    // The half step that credited the kick (0 before the particle's first step); a step that
+    // moves the particle keeps its own, t / 2 (integrate_kicked's product: the same bits).
+    [[maybe_unused]] R& kept_half = kick_of(arrays.kick_half_step, i, none);
+    const R h = kept_half;
+    [[maybe_unused]] const R half = t * R(0.5);
     if constexpr (!plain_positions) {  // stored wider or compensated (precision.hpp)
       bool movable = true;
       if constexpr (Layout::has_forces) {
@@ -211,11 +209,13 @@ class SystemKernel {
                           arrays.velocity_y[i], ky, ay, t, h, factors);
       integrate_stored_if(movable, arrays.position_z[i], arrays.position_error_z, i,
                           arrays.velocity_z[i], kz, az, t, h, factors);
+      if constexpr (Layout::has_kicks) kept_half = select_if(movable, half, kept_half);
     } else if constexpr (Layout::has_forces && AllMovable) {
       apply_forces(arrays, i, ax, ay, az);
       integrate_component<D, P>(arrays.position_x[i], arrays.velocity_x[i], kx, ax, t, h, factors);
       integrate_component<D, P>(arrays.position_y[i], arrays.velocity_y[i], ky, ay, t, h, factors);
       integrate_component<D, P>(arrays.position_z[i], arrays.velocity_z[i], kz, az, t, h, factors);
+      if constexpr (Layout::has_kicks) kept_half = half;
     } else if constexpr (Layout::has_forces) {
       const R inverse_mass = apply_forces(arrays, i, ax, ay, az);
       integrate_if_movable(inverse_mass, arrays.position_x[i], arrays.velocity_x[i], kx, ax, t, h,
@@ -224,10 +224,13 @@ class SystemKernel {
                            factors);
       integrate_if_movable(inverse_mass, arrays.position_z[i], arrays.velocity_z[i], kz, az, t, h,
                            factors);
+      if constexpr (Layout::has_kicks)
+        kept_half = select_if_less(R(0), inverse_mass, half, kept_half);
     } else {
       integrate_component<D, P>(arrays.position_x[i], arrays.velocity_x[i], kx, ax, t, h, factors);
       integrate_component<D, P>(arrays.position_y[i], arrays.velocity_y[i], ky, ay, t, h, factors);
       integrate_component<D, P>(arrays.position_z[i], arrays.velocity_z[i], kz, az, t, h, factors);
+      if constexpr (Layout::has_kicks) kept_half = half;
     }
     if constexpr (Layout::has_lifetime) count_age(arrays.age[i], arrays.age_error[i], t);
   }

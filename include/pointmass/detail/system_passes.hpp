@@ -49,7 +49,6 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
   using Base::has_interpolation;
   using Base::keeps_factors;
   using Base::kept_;
-  using Base::last_half_;
   using Base::make_room;
   using Base::remove;
   using Base::removing_;
@@ -169,7 +168,6 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
     if constexpr (Layout::per_particle_retention) {
       parameters.refresh = !real_equal(duration, retention_duration_);
     }
-    if constexpr (Layout::has_kicks) parameters.last_half = last_half_;
     return parameters;
   }
   // `function`: the call a report names (step's own, or begin_step called by the user).
@@ -189,12 +187,6 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
   // the damping_retention column holds the retention for this duration.
   void record_retention(R duration) noexcept {
     if constexpr (Layout::per_particle_retention) retention_duration_ = duration;
-    record_half(duration);
-  }
-  // Every particle has just stepped by `duration`: a kicked policy's credit is for its half
-  // (the kernel's product, so the same bits).
-  void record_half(R duration) noexcept {
-    if constexpr (Layout::has_kicks) last_half_ = duration * R(0.5);
   }
   // Steps every particle, walking in the direction due; false when there was nothing to do.
   // A branch picks the walk: through a function pointer it was not inlined, and slower.

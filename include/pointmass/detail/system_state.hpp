@@ -88,8 +88,7 @@ class SystemState {
         acceleration_(other.acceleration_),
         handles_(other.handles_),
         retention_duration_(other.retention_duration_),
-        kept_(other.kept_),
-        last_half_(other.last_half_) {}
+        kept_(other.kept_) {}
   SystemState(SystemState&& other) noexcept
       : block_(std::move(other.block_)),
         backward_(std::exchange(other.backward_, false)),
@@ -97,8 +96,7 @@ class SystemState {
         acceleration_(other.acceleration_),
         handles_(std::move(other.handles_)),
         retention_duration_(other.retention_duration_),
-        kept_(other.kept_),
-        last_half_(other.last_half_) {
+        kept_(other.kept_) {
     ++other.replacements_;  // its particles left with the move
   }
 
@@ -117,7 +115,6 @@ class SystemState {
     std::swap(handles_, other.handles_);
     std::swap(retention_duration_, other.retention_duration_);
     std::swap(kept_, other.kept_);
-    std::swap(last_half_, other.last_half_);
     ++replacements_;
     ++other.replacements_;
   }
@@ -136,9 +133,6 @@ class SystemState {
   // -1: none.
   R retention_duration_ = R(-1);
   [[no_unique_address]] std::conditional_t<keeps_factors, KeptFactors<D, R>, NoKeptFactors> kept_{};
-  struct NoHalf {};
-  // A kicked position policy's last step length / 2 (StepParameters::last_half); 0 at first.
-  [[no_unique_address]] std::conditional_t<Layout::has_kicks, R, NoHalf> last_half_{};
 
   // --- size and capacity ---------------------------------------------------------------------
 
@@ -249,7 +243,10 @@ class SystemState {
       a.age_error[i] = R(0);
       a.lifetime[i] = real_infinity<R>;
     }
-    if constexpr (Layout::has_kicks) store(a.kick_x, a.kick_y, a.kick_z, i, {});
+    if constexpr (Layout::has_kicks) {
+      store(a.kick_x, a.kick_y, a.kick_z, i, {});
+      a.kick_half_step[i] = R(0);
+    }
     store_user_columns(i, columns, std::make_index_sequence<user_column_count>{});
     return i;
   }
@@ -273,9 +270,10 @@ class SystemState {
       store(a.force_x, a.force_y, a.force_z, i, particle.force_accumulator());
     }
     if constexpr (Layout::per_particle_damping) store_damping(i, damping_state(particle.damping()));
-    // (the system's last step length settles it: ParticleSystem::spawn(particle))
-    if constexpr (Layout::has_kicks)
+    if constexpr (Layout::has_kicks) {
       store(a.kick_x, a.kick_y, a.kick_z, i, particle.credited_kick());
+      a.kick_half_step[i] = particle.credited_half_step();
+    }
   }
   // Particle i's damping state, and its retention for retention_duration_ (the same
   // function and inputs as the step's refresh, so the same bits).
