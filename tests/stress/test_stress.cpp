@@ -99,10 +99,15 @@ TEST_CASE_TEMPLATE("damping 1 is no damping, bit for bit, damping 0 keeps only t
       }
       const Vector3<R> push = cast<R>(s.gravity) * (R(1) / R(60));
       // v1 = v0 d + a t (PerFrame, PerSecond): a t; (v0 + a t) d^t: 0; exact: a t phi1(-inf) = 0.
+      // VelocityVerlet damps between its half kicks: the second, a t / 2 on credit, is kept.
       const bool keeps_push =
           std::is_same_v<D, damping::PerFrame> || std::is_same_v<D, damping::PerSecond>;
       for (const auto& x : stopped) CHECK(finite(x));
-      CHECK(cast<R>(stopped.back().velocity) == (keeps_push ? push : Vector3<R>{}));
+      if constexpr (pointmass::detail::kicks_v<P>) {
+        CHECK(cast<R>(stopped.back().velocity) == push * R(0.5));
+      } else {
+        CHECK(cast<R>(stopped.back().velocity) == (keeps_push ? push : Vector3<R>{}));
+      }
     }
   };
   for_each_combination(compare_with_none);
