@@ -14,6 +14,7 @@ POINTMASS_CROSS_PACKAGES=(g++-multilib
 POINTMASS_PACKAGES=(cmake ninja-build g++ clang libclang-rt-14-dev libboost-dev doctest-dev
                     libbenchmark-dev libtbb-dev gnuplot-nox doxygen pkg-config
                     libglm-dev libeigen3-dev  # test-only (tests/packaging/user_vectors)
+                    libxxhash-dev  # test-only: the state hash against XXH64 (tests/system)
                     libtrilinos-kokkos-dev  # pointmass::kokkos and tests/kokkos (Serial backend)
                     clang-format-14 clang-tidy-14  # tests/lint (POINTMASS_LINT)
                     "${POINTMASS_CROSS_PACKAGES[@]}")

@@ -18,5 +18,6 @@
 #include "position.hpp"
 #include "quantities.hpp"
 #include "real.hpp"
+#include "snapshot.hpp"
 #include "trajectory.hpp"
 #include "vector3.hpp"

@@ -3,6 +3,7 @@
 // configurations of every public header, so that their templates' bodies are analysed.
 #include <pointmass/parallel.hpp>
 #include <pointmass/pointmass.hpp>
+#include <pointmass/snapshot.hpp>
 #include <pointmass/units.hpp>
 
 #include <cstdint>
@@ -98,6 +99,22 @@ double configurations() {
   return sum;
 }
 
+// Every call of snapshot.hpp, on a configuration with handles and a user column.
+double snapshots() {
+  using Saved = pm::ParticleSystem<float, pm::damping::PerSecond, pm::position::SemiImplicit,
+                                   pm::features::Lifetime, pm::features::Handles,
+                                   pm::features::Column<TagColour, std::uint32_t>>;
+  Saved system;
+  (void)system.spawn({0, 0, 0}, {1, 2, 3});
+  const pm::Snapshot<Saved> saved(system);
+  system.step(1.0F / 60);
+  saved.restore(system);
+  Saved loaded;
+  const bool same =
+      pm::load_bytes(loaded, pm::save_bytes(system)) && pm::state_hash(loaded) == saved.hash();
+  return same ? 1.0 : 0.0;
+}
+
 double with_units() {
   namespace si = boost::units::si;
   pm::units::Particle<double, pm::damping::PerSecond, pm::position::ConstantAcceleration> shell;
@@ -110,7 +127,7 @@ double with_units() {
 }  // namespace
 
 int main() try {
-  std::printf("%g\n", configurations() + with_units());
+  std::printf("%g\n", configurations() + with_units() + snapshots());
   return 0;
 } catch (const std::exception& e) {
   std::fputs(e.what(), stderr);

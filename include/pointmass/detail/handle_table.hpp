@@ -103,11 +103,18 @@ class HandleTable {
     return std::size_t{s.index};
   }
 
- private:
   struct Slot {
     std::uint32_t index = 0;  // the particle's index while alive; the next free slot when free
     G generation = 0;
   };
+  /// The slots and the free list's first slot, as a snapshot writes them and reads them back
+  /// (snapshot.hpp checks that they agree with the particles before it installs them).
+  [[nodiscard]] const std::vector<Slot>& slots() const noexcept { return slots_; }
+  [[nodiscard]] std::uint32_t free_head() const noexcept { return free_; }
+  HandleTable(std::vector<Slot> slots, std::uint32_t free) noexcept
+      : slots_(std::move(slots)), free_(free) {}
+
+ private:
   std::vector<Slot> slots_;
   std::uint32_t free_ = none;
 };

@@ -77,6 +77,10 @@ class SoaBlock {
     return grown;
   }
 
+  /// Copies other's particles into this block, which has room for them (capacity() >=
+  /// other.size()).
+  void copy_particles(const SoaBlock& other) noexcept { copy_from(other.arrays_); }
+
   /// Moves particle `from` into slot `to` (swap-remove's move), in every stored array.
   static void move_particle(const Arrays& arrays, std::size_t from, std::size_t to) noexcept {
     Layout::for_each_array(arrays, [&](auto* array) { array[to] = array[from]; });

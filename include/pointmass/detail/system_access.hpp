@@ -33,6 +33,14 @@ struct SystemAccess {
     using type = typename System::Layout;
   };
   template <class System>
+  struct BlockOf {
+    using type = typename System::Block;
+  };
+  template <class System>
+  struct TableOf {
+    using type = typename System::Table;
+  };
+  template <class System>
   using Kernel = typename KernelOf<System>::type;
   template <class System>
   using Layout = typename LayoutOf<System>::type;
@@ -43,6 +51,35 @@ struct SystemAccess {
   template <class System>
   static void arrays_changed(System& system) noexcept {
     system.forget_retention();
+  }
+  // A snapshot's reach (snapshot.hpp): the state whole, to read and to replace.
+  template <class System>
+  static void assign_state(System& to, const System& from) {
+    to.State::assign_state(from);
+  }
+  template <class System>
+  static const auto& handle_table(const System& system) noexcept {
+    return system.handles_;
+  }
+  template <class System>
+  static const auto& uniform_damping(const System& system) noexcept {
+    return system.damping_;
+  }
+  template <class System>
+  static const auto& uniform_acceleration(const System& system) noexcept {
+    return system.acceleration_;
+  }
+  template <class System>
+  static auto retention_duration(const System& system) noexcept {
+    return system.retention_duration_;
+  }
+  template <class System, class Damping, class Acceleration, class R>
+  static void install(System& system, typename BlockOf<System>::type&& block,
+                      typename TableOf<System>::type&& table, const Damping& damping,
+                      const Acceleration& acceleration, R retention_duration) noexcept {
+    system.block_ = std::move(block);
+    system.handles_ = std::move(table);
+    system.install_uniform(damping, acceleration, retention_duration);
   }
   template <class System>
   static bool next_step_backward(const System& system) noexcept {

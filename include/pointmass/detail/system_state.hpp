@@ -119,6 +119,28 @@ class SystemState {
     ++other.replacements_;
   }
 
+  // This system takes other's state (a snapshot's save and restore), in its own memory where
+  // that has room. All or nothing: what may allocate comes first (the table's slots are
+  // trivially copyable, so their assignment changes nothing when it throws).
+  void assign_state(const SystemState& other) {
+    if (this == &other) return;
+    Block grown = capacity() < other.size() ? other.block_.with_capacity(other.size()) : Block{};
+    handles_ = other.handles_;
+    if (grown.capacity() != 0) block_ = std::move(grown);
+    else block_.copy_particles(other.block_);
+    install_uniform(other.damping_, other.acceleration_, other.retention_duration_);
+    kept_ = other.kept_;
+  }
+  // The uniform values a snapshot holds; the kept factors are recomputed (the same bits).
+  void install_uniform(const damping_state& damping, const Vector3<R>& acceleration,
+                       R retention_duration) noexcept {
+    damping_ = damping;
+    acceleration_ = acceleration;
+    retention_duration_ = retention_duration;
+    kept_ = {};
+    ++replacements_;  // as a swap: a removal pass under way ends
+  }
+
   Block block_;
   bool backward_ = false;  // the next step walks backwards (see Kernel::alternates)
   RemovalPass removing_ = RemovalPass::none;  // inside a pass that removes particles
