@@ -180,10 +180,8 @@ class SnapshotFormat {
         },
         Layout::columns);
     typename Layout::Arrays none{};
-    Layout::for_each_array(none, [&](auto* array) {
-      put_value(sink, std::uint32_t{sizeof(*array)});
-      put_value(sink, std::uint32_t{alignof(decltype(*array))});
-    });
+    Layout::for_each_array(none,
+                           [&](auto* array) { put_value(sink, std::uint32_t{sizeof(*array)}); });
     if constexpr (Layout::has_handles) {
       put_value(sink, std::uint32_t{sizeof(typename Layout::handles::generation_type)});
     }

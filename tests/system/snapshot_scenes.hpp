@@ -56,9 +56,11 @@ void run_scene(System& system, Random& random, int steps) {
       system.set_damping(R(0.5) + random.uniform(R(0.25)));
     }
     for (int n = 0; n < 6; ++n) {
-      const std::size_t i = system.spawn(
-          Vector3<P>{P(random.uniform(R(100))), P(random.uniform(R(100))), P(1e3)},
-          Vector3<R>{random.uniform(R(20)), random.uniform(R(20)), random.uniform(R(20))});
+      // (Drawn in order: a call's arguments are evaluated in an order each compiler picks.)
+      const Vector3<P> position{P(random.uniform(R(100))), P(random.uniform(R(100))), P(1e3)};
+      const Vector3<R> velocity{random.uniform(R(20)), random.uniform(R(20)),
+                                random.uniform(R(20))};
+      const std::size_t i = system.spawn(position, velocity);
       if constexpr (System::template has<features::Lifetime>) {
         system.set_lifetime(i, R(0.1) + R(random.next() % 90) / R(60));
       }

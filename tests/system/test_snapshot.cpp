@@ -6,6 +6,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -285,4 +287,78 @@ TEST_CASE("snapshot: a loaded state steps with its own damping, not the factors 
   saved.step(1.0f / 60);
   system.step(1.0f / 60);
   CHECK(columns_of(system) == columns_of(saved));
+}
+
+// --- golden snapshots: the format and the bits, the same in every configuration -------------
+// tests/system/snapshots/NAME.snapshot holds save_bytes after 40 steps of the scene (seed 21),
+// and hashes.txt the state hash after 8 more steps from the file's state. Written by
+// scripts/golden-snapshots.sh (this test with POINTMASS_WRITE_GOLDEN set to the folder).
+
+namespace {
+
+std::vector<std::byte> read_file(const std::string& path) {
+  std::vector<std::byte> bytes;
+  if (std::FILE* file = std::fopen(path.c_str(), "rb")) {
+    std::byte buffer[4096];
+    for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, file)) != 0;) {
+      bytes.insert(bytes.end(), buffer, buffer + got);
+    }
+    std::fclose(file);
+  }
+  return bytes;
+}
+
+// The hash after 8 more steps, as 16 hexadecimal digits.
+template <class System>
+std::string hash_after_more_steps(System system, Random random) {
+  run_scene(system, random, 8);
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(state_hash(system)));
+  return text;
+}
+
+template <class System>
+void golden(const char* name, std::string& hashes) {
+  Random random{0};
+  const System system = scene<System>(21, 40, random);
+  const std::vector<std::byte> bytes = save_bytes(system);
+  const std::string path = std::string(POINTMASS_SNAPSHOT_DIR) + "/" + name + ".snapshot";
+  const std::string line = std::string(name) + " " + hash_after_more_steps(system, random) + "\n";
+  if (const char* folder = std::getenv("POINTMASS_WRITE_GOLDEN")) {
+    const std::string out = std::string(folder) + "/" + name + ".snapshot";
+    std::FILE* file = std::fopen(out.c_str(), "wb");
+    REQUIRE(file != nullptr);
+    CHECK(std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size());
+    std::fclose(file);
+    hashes += line;
+    return;
+  }
+  const std::string named = name;
+  CAPTURE(named);
+  const std::vector<std::byte> committed = read_file(path);
+  REQUIRE(!committed.empty());
+  CHECK(committed == bytes);  // the same format and the same bits here
+  System loaded;
+  REQUIRE(load_bytes(loaded, committed));
+  hashes += std::string(name) + " " + hash_after_more_steps(loaded, random) + "\n";
+}
+
+}  // namespace
+
+TEST_CASE("snapshot: the committed snapshots load, and step on to the committed hashes") {
+  std::string hashes;
+  golden<Fireworks>("fireworks", hashes);
+  golden<Rope>("rope", hashes);
+  golden<Far>("far", hashes);
+  golden<Sparks>("sparks", hashes);
+  const std::string committed_path = std::string(POINTMASS_SNAPSHOT_DIR) + "/hashes.txt";
+  if (const char* folder = std::getenv("POINTMASS_WRITE_GOLDEN")) {
+    std::FILE* file = std::fopen((std::string(folder) + "/hashes.txt").c_str(), "wb");
+    REQUIRE(file != nullptr);
+    std::fputs(hashes.c_str(), file);
+    std::fclose(file);
+    return;
+  }
+  const std::vector<std::byte> committed = read_file(committed_path);
+  CHECK(std::string(reinterpret_cast<const char*>(committed.data()), committed.size()) == hashes);
 }
