@@ -101,9 +101,10 @@ path, scene, terminal, output = sys.argv[1:5]
 rows = list(csv.DictReader(open(path)))
 colour = {"None": "#E69F00", "PerFrame": "#56B4E9", "PerSecond": "#009E73",
           "AccelerateThenDamp": "#CC79A7", "Exact": "#0072B2"}
-marker = {"Euler": 4, "ConstantAcceleration": 6, "SemiImplicit": 8, "Exact": 12}  # open; +1 filled
+marker = {"Euler": 4, "ConstantAcceleration": 6, "SemiImplicit": 8, "VelocityVerlet": 10,
+          "Exact": 12}  # open; +1 filled
 marker_name = {"Euler": "square", "ConstantAcceleration": "circle", "SemiImplicit": "triangle",
-               "Exact": "diamond"}
+               "VelocityVerlet": "inverted triangle", "Exact": "diamond"}
 title = {"ballistic": "Ballistic shots (pistol, artillery, fireball, laser; 5 s)",
          "spring": "Mass on a spring (period 1 s, undamped and damped; 10 s)",
          "far": "The same ballistic shots launched 1e6 m from the origin (along every axis; 5 s)"}[scene]
