@@ -125,8 +125,8 @@ template <class System>
 class SnapshotFormat {
   using Access = SystemAccess;
   using Layout = Access::Layout<System>;
-  using Block = typename Access::BlockOf<System>::type;
-  using Table = typename Access::TableOf<System>::type;
+  using Block = typename Access::TypesOf<System>::block;
+  using Table = typename Access::TypesOf<System>::table;
   using R = typename System::real;
   using damping_state = typename System::damping_policy::template State<R>;
   static constexpr bool uniform_acceleration = !Layout::per_particle_acceleration;

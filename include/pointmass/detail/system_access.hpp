@@ -23,27 +23,18 @@ namespace detail {
 /// duration's (finish_step, which cannot know what a loop of the caller's did, forgets it).
 /// So the next step of the same length computes no exponential, as after step.
 struct SystemAccess {
-  // Class templates, not alias templates: an alias is checked for access where it is used.
+  // A class template, not alias templates: an alias is checked for access where it is used.
   template <class System>
-  struct KernelOf {
-    using type = typename System::Kernel;
+  struct TypesOf {
+    using kernel = typename System::Kernel;
+    using layout = typename System::Layout;
+    using block = typename System::Block;
+    using table = typename System::Table;
   };
   template <class System>
-  struct LayoutOf {
-    using type = typename System::Layout;
-  };
+  using Kernel = typename TypesOf<System>::kernel;
   template <class System>
-  struct BlockOf {
-    using type = typename System::Block;
-  };
-  template <class System>
-  struct TableOf {
-    using type = typename System::Table;
-  };
-  template <class System>
-  using Kernel = typename KernelOf<System>::type;
-  template <class System>
-  using Layout = typename LayoutOf<System>::type;
+  using Layout = typename TypesOf<System>::layout;
   template <class System>
   static const typename System::Layout::Arrays& arrays(const System& system) noexcept {
     return system.State::arrays();
@@ -74,8 +65,8 @@ struct SystemAccess {
     return system.retention_duration_;
   }
   template <class System, class Damping, class Acceleration, class R>
-  static void install(System& system, typename BlockOf<System>::type&& block,
-                      typename TableOf<System>::type&& table, const Damping& damping,
+  static void install(System& system, typename TypesOf<System>::block&& block,
+                      typename TypesOf<System>::table&& table, const Damping& damping,
                       const Acceleration& acceleration, R retention_duration) noexcept {
     system.block_ = std::move(block);
     system.handles_ = std::move(table);
