@@ -187,9 +187,6 @@ class KokkosSystem {
                 "KokkosSystem: features::Handles is not supported on a device (the handle "
                 "table stays on the host); step a system with Handles on the host, or "
                 "without Handles on the device");
-  static_assert(!Layout::has_kicks,
-                "KokkosSystem: position::VelocityVerlet is not supported on a device yet; "
-                "step it on the host (ParticleSystem, pointmass::step with par_unseq)");
   using Block = detail::SoaBlock<Layout>;
   template <class T>
   using Unmanaged = Kokkos::View<T*, MemorySpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>>;

@@ -20,3 +20,11 @@ TEST_CASE(
     "PerSecond damping, SemiImplicit position: Kokkos equals ParticleSystem::step, bit for bit") {
   test::check_pair<damping::PerSecond, position::SemiImplicit>();
 }
+
+// The credited kicks and their half steps are columns like any other: carried by copy_from
+// and copy_to, moved by expiry, stepped by the same kernel.
+TEST_CASE(
+    "PerSecond damping, VelocityVerlet position: Kokkos equals ParticleSystem::step, bit for "
+    "bit") {
+  test::check_pair<damping::PerSecond, position::VelocityVerlet>();
+}
