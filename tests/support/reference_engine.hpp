@@ -9,8 +9,13 @@
 // positive duration, and computing the code listing's form with one pow per call:
 //   p += v t;  a = acceleration + force * inverse_mass;  v += a t;  v *= pow(damping, t);
 //   force = 0.
-// It is written from that description, not from the engine's source.
+// It is written from that description, not from the engine's source. Beside it, the engine's
+// force generators (SPEC.md, "The reference engine's force generators"): an interface with
+// one virtual update_force, drag and an anchored spring, and a registry of (particle,
+// generator) pairs walked in insertion order, each defined in reference_engine.cpp.
 #pragma once
+
+#include <vector>
 
 namespace reference_engine {
 
@@ -37,6 +42,9 @@ struct Vector3 {
     z *= scale;
   }
   void clear() { x = y = z = 0; }
+  /// The engine's magnitude and normalise (divides when the magnitude is positive).
+  Real magnitude() const;
+  void normalise();
 };
 
 template <class Real>
@@ -66,5 +74,59 @@ class Particle {
 
 static_assert(sizeof(Vector3<float>) == 16 && sizeof(Vector3<double>) == 32);
 static_assert(sizeof(Particle<float>) == 72 && sizeof(Particle<double>) == 144);
+
+/// The engine's force generator: one virtual member that adds to a particle's force.
+template <class Real>
+class ParticleForceGenerator {
+ public:
+  ParticleForceGenerator() = default;
+  ParticleForceGenerator(const ParticleForceGenerator&) = default;
+  ParticleForceGenerator& operator=(const ParticleForceGenerator&) = default;
+  virtual ~ParticleForceGenerator() = default;
+  virtual void update_force(Particle<Real>* particle, Real duration) = 0;
+};
+
+/// -(k1 s + k2 s^2) times the normalised velocity, s the speed.
+template <class Real>
+class ParticleDrag : public ParticleForceGenerator<Real> {
+ public:
+  ParticleDrag(Real k1, Real k2) : k1_(k1), k2_(k2) {}
+  void update_force(Particle<Real>* particle, Real duration) override;
+
+ private:
+  Real k1_;
+  Real k2_;
+};
+
+/// (rest - |d|) k times the normalised d = position - *anchor.
+template <class Real>
+class ParticleAnchoredSpring : public ParticleForceGenerator<Real> {
+ public:
+  ParticleAnchoredSpring(Vector3<Real>* anchor, Real spring_constant, Real rest_length)
+      : anchor_(anchor), spring_constant_(spring_constant), rest_length_(rest_length) {}
+  void update_force(Particle<Real>* particle, Real duration) override;
+
+ private:
+  Vector3<Real>* anchor_;
+  Real spring_constant_;
+  Real rest_length_;
+};
+
+/// (particle, generator) pairs, walked in insertion order: one virtual call each.
+template <class Real>
+class ParticleForceRegistry {
+ public:
+  void add(Particle<Real>* particle, ParticleForceGenerator<Real>* generator) {
+    registrations_.push_back({particle, generator});
+  }
+  void update_forces(Real duration);
+
+ private:
+  struct Registration {
+    Particle<Real>* particle;
+    ParticleForceGenerator<Real>* generator;
+  };
+  std::vector<Registration> registrations_;
+};
 
 }  // namespace reference_engine
