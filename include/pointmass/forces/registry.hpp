@@ -10,6 +10,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -170,11 +171,22 @@ class ForceRegistry {
 #endif
     const Pass pass(*this);
     const std::uint32_t replacements = replacements_;
-    const auto all = [&](const auto& entries) {
-      return update_all(entries, duration, replacements);
+    // Every vector's count when the pass begins: a registration a generator adds to a vector
+    // the pass has not reached yet first acts in the next pass too.
+    const auto counts = std::apply(
+        [](const auto&... e) {
+          return std::array{e.size()..., std::size_t{0}};
+        },
+        known_);
+    const std::size_t erased = erased_.size();
+    std::size_t k = 0;
+    const auto all = [&](const auto& entries, std::size_t count) {
+      return update_all(entries, count, duration, replacements);
     };
     std::apply(
-        [&](const auto&... entries) { static_cast<void>((all(entries) && ...) && all(erased_)); },
+        [&](const auto&... entries) {
+          static_cast<void>((all(entries, counts[k++]) && ...) && all(erased_, erased));
+        },
         known_);
   }
 
@@ -224,13 +236,13 @@ class ForceRegistry {
     }
   }
 
-  // Entries called in a pass are those present when it began; an entry removed during the
-  // pass is skipped from then on. Indices, not iterators: an add may reallocate the vector.
+  // Entries called in a pass are the first `count`, those present when it began; an entry
+  // removed during the pass is skipped from then on. Indices, not iterators: an add may
+  // reallocate the vector.
   // False when a generator replaced the registry: the pass ends.
   template <class Vec>
-  [[nodiscard]] bool update_all(const Vec& entries, real duration,
+  [[nodiscard]] bool update_all(const Vec& entries, std::size_t count, real duration,
                                 std::uint32_t replacements) const {
-    const std::size_t count = entries.size();
     for (std::size_t i = 0; i < count; ++i) {
       if (entries[i].particle == nullptr) continue;
       entries[i].update(duration);
