@@ -485,6 +485,56 @@ TEST_CASE_TEMPLATE("a type-erased registration added by a known generator waits 
   CHECK(hub.added.calls == 1);
 }
 
+namespace {
+// Counts the instances alive; on its first call removes itself or moves its registry away.
+template <class R>
+struct Counted {
+  using Registry = forces::ForceRegistry<Particle<R>>;
+  enum class Mode { remove_self, move_out };
+  Registry* registry;
+  Registry* elsewhere;
+  Mode mode;
+  int* alive;
+  bool acted = false;
+  Counted(Registry* r, Registry* e, Mode m, int* a) : registry(r), elsewhere(e), mode(m), alive(a) {
+    ++*alive;
+  }
+  Counted(const Counted& other)
+      : registry(other.registry),
+        elsewhere(other.elsewhere),
+        mode(other.mode),
+        alive(other.alive),
+        acted(other.acted) {
+    ++*alive;
+  }
+  Counted& operator=(const Counted&) = default;
+  ~Counted() { --*alive; }
+  void update_force(Particle<R>& particle, R) {
+    if (std::exchange(acted, true)) return;
+    if (mode == Mode::remove_self) registry->remove(particle, *this);
+    else *elsewhere = std::move(*registry);
+  }
+};
+}  // namespace
+
+TEST_CASE_TEMPLATE("a generator removed in a pass is destroyed as it ends, its registry moved away",
+                   R, float, double) {
+  using Registry = forces::ForceRegistry<Particle<R>>;
+  using Mode = typename Counted<R>::Mode;
+  Particle<R> particle;
+  int alive = 0;
+  Registry registry;
+  Registry elsewhere;
+  registry.add_owned(particle, Counted<R>(&registry, &elsewhere, Mode::remove_self, &alive));
+  registry.add_owned(particle, Counted<R>(&registry, &elsewhere, Mode::move_out, &alive));
+  REQUIRE(alive == 2);
+  registry.update_forces(R(0.1));  // the first removes itself, the second moves the registry
+  // Before the fix: 2 (the removed one went to `elsewhere`, alive until that compacted).
+  CHECK(alive == 1);
+  CHECK(elsewhere.size() == 1);
+  CHECK(registry.empty());
+}
+
 TEST_CASE_TEMPLATE("registry accepts const generators", R, float, double) {
   // Before the fix: "invalid static_cast ... to void*" inside the registry.
   forces::ForceRegistry<Particle<R>, forces::Drag<R>> registry;

@@ -64,13 +64,15 @@ class ForceRegistry {
       : known_(std::move(other.known_)),
         erased_(std::move(other.erased_)),
         removed_(std::exchange(other.removed_, 0)) {
+    other.keep_removed(known_, erased_, removed_);
     other.replaced({}, {});
   }
   ForceRegistry& operator=(ForceRegistry&& other) noexcept {
     if (this != &other) {
       Known_ known = std::move(other.known_);
       std::vector<ErasedEntry> erased = std::move(other.erased_);
-      const std::size_t removed = std::exchange(other.removed_, 0);
+      std::size_t removed = std::exchange(other.removed_, 0);
+      other.keep_removed(known, erased, removed);
       other.replaced({}, {});
       replaced(std::move(known), std::move(erased));
       removed_ = removed;
@@ -260,6 +262,26 @@ class ForceRegistry {
     erased_ = std::move(erased);
     removed_ = 0;
     ++replacements_;
+  }
+
+  // Registrations removed during this registry's pass stay with it when it hands the others
+  // over (moved or swapped away): destroyed as its pass ends, not when the receiver compacts.
+  void keep_removed(Known_& known, std::vector<ErasedEntry>& erased, std::size_t& removed) {
+    if (passes_ == 0 || removed == 0) return;
+    Retired kept;
+    const auto split = [](auto& from, auto& to) {
+      for (auto& e : from) {
+        if (e.particle == nullptr) to.push_back(std::move(e));
+      }
+      std::erase_if(from, [](const auto& e) { return e.particle == nullptr; });
+    };
+    const auto split_known = [&]<std::size_t... I>(std::index_sequence<I...>) {
+      (split(std::get<I>(known), std::get<I>(kept.known)), ...);
+    };
+    split_known(std::index_sequence_for<Known...>{});
+    split(erased, kept.erased);
+    retired_.push_back(std::move(kept));
+    removed = 0;
   }
 
   template <class Vec, class... Match>
