@@ -14,6 +14,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <pointmass/forces.hpp>
@@ -443,6 +444,95 @@ TEST_CASE_TEMPLATE("a generator that replaces its registry ends the pass, and la
     CHECK(calls[1] == (moved ? 4 : 1));
     CHECK(calls[2] == (moved ? 3 : 0));
   }
+}
+
+namespace {
+template <class R>
+struct Hub;
+// A generator of a known type that, on each call, registers hub->added (a type-erased one).
+template <class R>
+struct KnownAdder {
+  Hub<R>* hub;
+  void update_force(Particle<R>& particle, R) const;
+};
+template <class R>
+struct Plain {
+  int calls = 0;
+  void update_force(Particle<R>&, R) { ++calls; }
+};
+template <class R>
+struct Hub {
+  forces::ForceRegistry<Particle<R>, KnownAdder<R>> registry;
+  Plain<R> added;
+};
+template <class R>
+void KnownAdder<R>::update_force(Particle<R>& particle, R) const {
+  hub->registry.add(particle, hub->added);
+}
+}  // namespace
+
+TEST_CASE_TEMPLATE("a type-erased registration added by a known generator waits for the next pass",
+                   R, float, double) {
+  Hub<R> hub;
+  Particle<R> particle;
+  KnownAdder<R> adder{&hub};
+  hub.registry.add(particle, adder);  // a known type: called before the type-erased ones
+  hub.registry.update_forces(R(0.1));
+  // Before the fix: 1 (the type-erased vector's count was read when the pass reached it).
+  CHECK(hub.added.calls == 0);
+  CHECK(hub.registry.size() == 2);
+  hub.registry.update_forces(R(0.1));
+  CHECK(hub.added.calls == 1);
+}
+
+namespace {
+// Counts the instances alive; on its first call removes itself or moves its registry away.
+template <class R>
+struct Counted {
+  using Registry = forces::ForceRegistry<Particle<R>>;
+  enum class Mode { remove_self, move_out };
+  Registry* registry;
+  Registry* elsewhere;
+  Mode mode;
+  int* alive;
+  bool acted = false;
+  Counted(Registry* r, Registry* e, Mode m, int* a) : registry(r), elsewhere(e), mode(m), alive(a) {
+    ++*alive;
+  }
+  Counted(const Counted& other)
+      : registry(other.registry),
+        elsewhere(other.elsewhere),
+        mode(other.mode),
+        alive(other.alive),
+        acted(other.acted) {
+    ++*alive;
+  }
+  Counted& operator=(const Counted&) = default;
+  ~Counted() { --*alive; }
+  void update_force(Particle<R>& particle, R) {
+    if (std::exchange(acted, true)) return;
+    if (mode == Mode::remove_self) registry->remove(particle, *this);
+    else *elsewhere = std::move(*registry);
+  }
+};
+}  // namespace
+
+TEST_CASE_TEMPLATE("a generator removed in a pass is destroyed as it ends, its registry moved away",
+                   R, float, double) {
+  using Registry = forces::ForceRegistry<Particle<R>>;
+  using Mode = typename Counted<R>::Mode;
+  Particle<R> particle;
+  int alive = 0;
+  Registry registry;
+  Registry elsewhere;
+  registry.add_owned(particle, Counted<R>(&registry, &elsewhere, Mode::remove_self, &alive));
+  registry.add_owned(particle, Counted<R>(&registry, &elsewhere, Mode::move_out, &alive));
+  REQUIRE(alive == 2);
+  registry.update_forces(R(0.1));  // the first removes itself, the second moves the registry
+  // Before the fix: 2 (the removed one went to `elsewhere`, alive until that compacted).
+  CHECK(alive == 1);
+  CHECK(elsewhere.size() == 1);
+  CHECK(registry.empty());
 }
 
 TEST_CASE_TEMPLATE("registry accepts const generators", R, float, double) {

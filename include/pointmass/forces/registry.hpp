@@ -10,6 +10,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -63,13 +64,15 @@ class ForceRegistry {
       : known_(std::move(other.known_)),
         erased_(std::move(other.erased_)),
         removed_(std::exchange(other.removed_, 0)) {
+    other.keep_removed(known_, erased_, removed_);
     other.replaced({}, {});
   }
   ForceRegistry& operator=(ForceRegistry&& other) noexcept {
     if (this != &other) {
       Known_ known = std::move(other.known_);
       std::vector<ErasedEntry> erased = std::move(other.erased_);
-      const std::size_t removed = std::exchange(other.removed_, 0);
+      std::size_t removed = std::exchange(other.removed_, 0);
+      other.keep_removed(known, erased, removed);
       other.replaced({}, {});
       replaced(std::move(known), std::move(erased));
       removed_ = removed;
@@ -170,11 +173,22 @@ class ForceRegistry {
 #endif
     const Pass pass(*this);
     const std::uint32_t replacements = replacements_;
-    const auto all = [&](const auto& entries) {
-      return update_all(entries, duration, replacements);
+    // Every vector's count when the pass begins: a registration a generator adds to a vector
+    // the pass has not reached yet first acts in the next pass too.
+    const auto counts = std::apply(
+        [](const auto&... e) {
+          return std::array{e.size()..., std::size_t{0}};
+        },
+        known_);
+    const std::size_t erased = erased_.size();
+    std::size_t k = 0;
+    const auto all = [&](const auto& entries, std::size_t count) {
+      return update_all(entries, count, duration, replacements);
     };
     std::apply(
-        [&](const auto&... entries) { static_cast<void>((all(entries) && ...) && all(erased_)); },
+        [&](const auto&... entries) {
+          static_cast<void>((all(entries, counts[k++]) && ...) && all(erased_, erased));
+        },
         known_);
   }
 
@@ -224,13 +238,13 @@ class ForceRegistry {
     }
   }
 
-  // Entries called in a pass are those present when it began; an entry removed during the
-  // pass is skipped from then on. Indices, not iterators: an add may reallocate the vector.
+  // Entries called in a pass are the first `count`, those present when it began; an entry
+  // removed during the pass is skipped from then on. Indices, not iterators: an add may
+  // reallocate the vector.
   // False when a generator replaced the registry: the pass ends.
   template <class Vec>
-  [[nodiscard]] bool update_all(const Vec& entries, real duration,
+  [[nodiscard]] bool update_all(const Vec& entries, std::size_t count, real duration,
                                 std::uint32_t replacements) const {
-    const std::size_t count = entries.size();
     for (std::size_t i = 0; i < count; ++i) {
       if (entries[i].particle == nullptr) continue;
       entries[i].update(duration);
@@ -248,6 +262,26 @@ class ForceRegistry {
     erased_ = std::move(erased);
     removed_ = 0;
     ++replacements_;
+  }
+
+  // Registrations removed during this registry's pass stay with it when it hands the others
+  // over (moved or swapped away): destroyed as its pass ends, not when the receiver compacts.
+  void keep_removed(Known_& known, std::vector<ErasedEntry>& erased, std::size_t& removed) {
+    if (passes_ == 0 || removed == 0) return;
+    Retired kept;
+    const auto split = [](auto& from, auto& to) {
+      for (auto& e : from) {
+        if (e.particle == nullptr) to.push_back(std::move(e));
+      }
+      std::erase_if(from, [](const auto& e) { return e.particle == nullptr; });
+    };
+    const auto split_known = [&]<std::size_t... I>(std::index_sequence<I...>) {
+      (split(std::get<I>(known), std::get<I>(kept.known)), ...);
+    };
+    split_known(std::index_sequence_for<Known...>{});
+    split(erased, kept.erased);
+    retired_.push_back(std::move(kept));
+    removed = 0;
   }
 
   template <class Vec, class... Match>

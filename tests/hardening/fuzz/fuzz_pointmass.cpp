@@ -30,8 +30,10 @@
 //     bits as position_relative_to of the system and of the mirror's particle, exact wherever
 //     the true offset is a float, and nothing written past size() or when refused.
 //
-// Inputs starting with a byte >= 0xF0 drive the force generators instead (see "force
-// generators" below); a first byte in [0xE0, 0xF0) drives systems whose positions are stored
+// Inputs starting with a byte in [0xF0, 0xF8) drive the force generators instead (see "force
+// generators" below), 0xF8 and 0xF9 a ForceRegistry changed by its generators, from 0xFA
+// systems with a user column that throws, also driven through a unit of the other checks
+// setting (other_settings.cpp); a first byte in [0xE0, 0xF0) drives systems whose positions are stored
 // wider than their arithmetic, double or compensated (see "positions stored wider" below).
 //
 // A failed check prints what failed and calls abort(), which libFuzzer reports as a crash
@@ -43,6 +45,7 @@
 #include <pointmass/particle_system.hpp>
 
 #include <array>
+#include <deque>
 #include <span>
 
 #include <charconv>
@@ -61,6 +64,8 @@
 #include <utility>
 #include <vector>
 
+#include "fuzz_shared.hpp"
+
 namespace {
 
 using namespace pointmass;
@@ -73,6 +78,8 @@ struct Report {
   std::string argument;
   std::string text;
   std::string message;
+  std::string within;  // the latest report's many-valued call and element (spawn_burst)
+  std::size_t element = 0;
 };
 Report report;
 
@@ -82,6 +89,8 @@ void record(const ContractViolation& violation) {
   report.argument = violation.argument;
   report.text = violation.text;
   report.message = describe(violation);
+  report.within = violation.within != nullptr ? violation.within : "";
+  report.element = violation.element;
 }
 
 [[noreturn]] void fail(const char* what, const char* detail = "") {
@@ -584,8 +593,9 @@ void check_stored_position(const System& system, std::size_t i,
     require(identical(system.position(i), p), "a position was not stored as given");
   }
 }
-// The user column of the systems with the game features (features::Column<FuzzOwner, int>).
-struct FuzzOwner {};
+// The user column of the systems with the game features (features::Column<FuzzOwner, int>,
+// or fuzz::Fuse, whose construction can throw).
+using fuzz::FuzzOwner;
 template <class System>
 inline constexpr bool has_owner_column = System::template has<FuzzOwner>;
 
@@ -963,9 +973,256 @@ void check_positions_relative_to(const System& system, const M& mirror, Input& i
   }
 }
 
+// --- spawns whose user column throws, and the other checks setting --------------------------
+//
+// The systems chosen by a first byte from 0xFA (ExtendedConfigs below) have a user column
+// fuzz::Fuse whose construction throws where the input asks (with exceptions only; without,
+// the same operations spawn normally), and two more operations:
+//
+//   * spawn(p, v) (its T{} throws), spawn(p, v, seed) (converting the seed throws),
+//     spawn(particle) (T{} throws) and spawn_burst (particle k's column throws, its T{} or its
+//     seed): a refused input is reported as ever (validation comes first); a spawn that throws
+//     adds nothing: size, every column, every handle and the next handle issued as before
+//     (docs/particle-system.md); a burst that throws removes its particles, whose handles then
+//     find nothing (particle_system.hpp, spawn_burst). A burst's refused particles are
+//     reported naming spawn_burst and their element, and skipped.
+//   * the same system driven through other_settings.cpp, built with the checks off: spawns,
+//     kills, setters and steps (valid durations only: an unchecked step's bad duration is the
+//     caller's fault) must agree with the model, and that unit reads every particle as this
+//     one does.
+
+constexpr bool fuses_blow = POINTMASS_HAS_EXCEPTIONS != 0;
+
+/// Runs `attempt`; true when it threw fuzz::FuseBlown (never without exceptions).
+template <class Attempt>
+bool blows(const Attempt& attempt) {
+#if POINTMASS_HAS_EXCEPTIONS
+  try {
+    attempt();
+  } catch (const fuzz::FuseBlown&) {
+    fuzz::fuse_refuses = false;
+    return true;
+  }
+#else
+  attempt();
+#endif
+  fuzz::fuse_refuses = false;
+  return false;
+}
+
+/// A spawn that threw left `system` as `before` was: the next handle issued is the same too.
 template <class System>
+void expect_unchanged_by_throw(const System& system, const System& before) {
+  require(system.size() == before.size(), "a spawn that threw changed size()");
+  if constexpr (System::template has<pointmass::features::Handles>) {
+    using W = typename System::position_value;
+    using R = typename System::real;
+    System probe = system;
+    System expected = before;
+    const auto h = probe.spawn_handle(Vector3<W>{}, Vector3<R>{});
+    const auto g = expected.spawn_handle(Vector3<W>{}, Vector3<R>{});
+    require(h == g, "a spawn that threw took a handle slot");
+  }
+}
+
+template <class System>
+void fuzz_throwing_spawn(System& system, Mirror<System>& mirror, Budget& budget, Input& in,
+                         std::size_t index) {
+  using R = typename System::real;
+  using W = typename System::position_value;
+  const std::uint8_t how = in.byte();
+  const bool refuse = (how & 4) != 0;  // the column's construction throws
+  const auto p = position_vector<System>(in);
+  const auto v = in.vector<R>();
+  if (system.size() + 16 > max_particles) return;
+  const System before = system;
+  const auto track_new = [&](std::size_t first) {
+    for (std::size_t i = first; i < system.size(); ++i) {
+      if constexpr (System::template has<pointmass::features::Handles>)
+        mirror.track(system.handle(i), i);
+    }
+  };
+  if (how % 4 != 3) {  // one spawn
+    const int owner = how % 4 == 1 ? Mirror<System>::owner_for(mirror.next_serial) : 0;
+    typename System::particle_type body;
+    const bool copy = how % 4 == 2 && mirror.size() != 0;
+    if (copy) body = mirror.bodies[index % mirror.size()];
+    const Vector3<W> q = copy ? body.position() : p;
+    const Vector3<R> u = copy ? body.velocity() : v;
+    std::size_t i = System::npos;
+    const bool threw = blows([&] {
+      if (how % 4 == 1) {
+        i = system.spawn(p, v, fuzz::FuzzSeed{owner, refuse});
+      } else {
+        fuzz::fuse_refuses = refuse;
+        i = copy ? system.spawn(body) : system.spawn(p, v);
+      }
+    });
+    if (!position_accepted<System>(q) || !finite(u)) {  // validated before any column is made
+      require(!threw && i == System::npos, "a refused spawn threw or returned an index");
+      if (!position_accepted<System>(q)) expect_rejected("spawn", "position", q);
+      else expect_rejected("spawn", "velocity", u);
+    } else if (refuse && fuses_blow) {
+      require(threw, "a column that throws did not stop the spawn");
+      expect_unchanged_by_throw(system, before);
+    } else {
+      require(!threw && i == mirror.size(), "spawn index");
+      if (copy) mirror.push(body);
+      else mirror.spawn(p, v, owner);
+      track_new(i);
+      budget.vector(q, position_bound<System>);
+      budget.vector(u);
+    }
+    return;
+  }
+  // spawn_burst: particle k at p moved by k, with a seed (given) or T{}; fail_at's throws
+  const std::size_t count = in.byte() % 16;
+  const std::size_t fail_at = refuse ? in.byte() % (count + 1) : count;
+  const bool given = (how & 8) != 0;
+  const auto at = [&](std::size_t k) { return Vector3<W>{p.x + static_cast<W>(k), p.y, p.z}; };
+  const auto accepted = [&](std::size_t k) {
+    return position_accepted<System>(at(k)) && finite(v);
+  };
+  const bool throws = fuses_blow && fail_at < count && accepted(fail_at);
+  using Handle = typename System::Handle;
+  std::vector<Handle> made;  // the handles of this burst's particles, as they are added
+  std::size_t asked = 0;
+  const auto note_made = [&] {
+    if constexpr (System::template has<pointmass::features::Handles>) {
+      if (system.size() > before.size() + made.size())
+        made.push_back(system.handle(system.size() - 1));
+    }
+  };
+  const std::uint64_t serial = mirror.next_serial;  // particle k's value: owner_for(serial + k)
+  std::size_t added = 0;
+  const bool threw = blows([&] {
+    if (given) {
+      added = system.spawn_burst(count, [&](std::size_t k) {
+        require(k == asked++, "spawn_burst asked for its elements out of order");
+        note_made();
+        const int owner = Mirror<System>::owner_for(serial + k);
+        return std::tuple(at(k), v, fuzz::FuzzSeed{owner, k == fail_at});
+      });
+    } else {
+      added = system.spawn_burst(count, [&](std::size_t k) {
+        require(k == asked++, "spawn_burst asked for its elements out of order");
+        note_made();
+        fuzz::fuse_refuses = k == fail_at;
+        return std::tuple(at(k), v);
+      });
+    }
+  });
+  const std::size_t reached = throws ? fail_at : count;  // the elements spawned or refused
+  std::size_t refused = 0;
+  std::size_t last_refused = 0;
+  for (std::size_t k = 0; k < reached; ++k) {
+    if (!accepted(k)) ++refused, last_refused = k;
+  }
+  require(report.calls == static_cast<int>(refused), "spawn_burst's refusals not reported once");
+  if (refused != 0) {
+    require(report.function == "spawn" && report.within == "spawn_burst" &&
+                report.element == last_refused,
+            "a burst's refusal does not name spawn_burst and its element:", report.message.c_str());
+  }
+  report = {};
+  if (throws) {
+    require(threw, "a burst whose column throws did not throw");
+    require(system.size() == before.size(), "a burst that threw left particles");
+    for (const auto& h : made) {
+      if constexpr (System::template has<pointmass::features::Handles>)
+        require(!system.contains(h), "a particle of a burst that threw is still found");
+    }
+    return;
+  }
+  require(!threw && added == count - refused, "spawn_burst's count");
+  const std::size_t first = mirror.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    if (!accepted(k)) continue;
+    mirror.spawn(at(k), v, given ? Mirror<System>::owner_for(serial + k) : 0);
+    budget.vector(at(k), position_bound<System>);
+  }
+  budget.vector(v);
+  track_new(first);
+}
+
+template <class System>
+void fuzz_other_settings(System& system, Mirror<System>& mirror, Budget& budget, Input& in,
+                         std::size_t index) {
+  using R = typename System::real;
+  using Other = fuzz::OtherSettings<System>;
+  const bool valid_index = index < system.size();
+  const std::uint8_t what = in.byte();
+  switch (what % 7) {
+    case 0:
+    case 1: {  // spawn, without a value or with one
+      const auto p = position_vector<System>(in);
+      const auto v = in.vector<R>();
+      if (system.size() >= max_particles) break;
+      const int owner = what % 7 == 1 ? Mirror<System>::owner_for(mirror.next_serial) : 0;
+      const std::size_t i =
+          owner != 0 ? Other::spawn(system, p, v, owner) : Other::spawn(system, p, v);
+      if (!position_accepted<System>(p) || !finite(v)) {
+        require(i == System::npos, "rejected spawn returned an index");
+        if (!position_accepted<System>(p)) expect_rejected("spawn", "position", p);
+        else expect_rejected("spawn", "velocity", v);
+      } else {
+        require(i == mirror.size(), "spawn index (other settings)");
+        mirror.spawn(p, v, owner);
+        if constexpr (System::template has<pointmass::features::Handles>)
+          mirror.track(system.handle(i), i);
+        budget.vector(p, position_bound<System>);
+        budget.vector(v);
+      }
+      break;
+    }
+    case 2:
+      Other::kill(system, index);
+      if (!valid_index) expect_rejected("kill", "index", index);
+      else mirror.kill(index);
+      break;
+    case 3: {
+      const auto v = in.vector<R>();
+      Other::set_velocity(system, index, v);
+      if (!valid_index) expect_rejected("set_velocity", "index", index);
+      else if (!finite(v)) expect_rejected("set_velocity", "velocity", v);
+      else mirror.bodies[index].set_velocity(v), budget.vector(v);
+      break;
+    }
+    case 4: {
+      const int owner = -static_cast<int>(what) - 1;
+      Other::set_column(system, index, owner);
+      if (!valid_index) expect_rejected("set_column", "index", index);
+      else mirror.owners[index] = owner;
+      break;
+    }
+    default: {  // a step, or the step_particle loop (a valid duration: unchecked there)
+      const R t = in.number<R>();
+      if (!real_isfinite(t) || t < R(0)) break;
+      if (what % 7 == 5) Other::step(system, t);
+      else Other::step_particles(system, t);
+      mirror.step(t);
+      budget.step(1, static_cast<double>(t));
+      break;
+    }
+  }
+  // The other unit reads every particle as this one does.
+  require(Other::size(system) == system.size(), "the other settings read another size()");
+  for (std::size_t i = 0; i < system.size(); ++i) {
+    const auto read = Other::read(system, i);
+    require(identical(read.position, system.position(i)) &&
+                identical(read.velocity, system.velocity(i)) &&
+                read.owner == system.template column<FuzzOwner>(i).value &&
+                read.handle == system.handle(i),
+            "the other settings read a particle differently");
+  }
+}
+
+// Extended: the two operations above too (codes % 25 of 23 and 24); the other systems read
+// codes % 23, as the corpus was written.
+template <class System, bool Extended = false>
 void fuzz_system(Input& in) {
   using R = typename System::real;
+  constexpr unsigned operations = Extended ? 25 : 23;
   System system(in.byte() % 40);
   Mirror<System> mirror;
   System other;  // the other side of swaps
@@ -977,7 +1234,8 @@ void fuzz_system(Input& in) {
     const bool valid_index = index < system.size();
     const std::size_t immortal = immortals(system);
     bool stepped = false;  // the operation stepped: no particle with an infinite lifetime may go
-    switch (code % 23) {
+    const unsigned operation = code % operations;
+    switch (operation) {
       case 0:
       case 1: {
         const auto p = position_vector<System>(in);
@@ -987,7 +1245,7 @@ void fuzz_system(Input& in) {
         int owner = 0;
         std::size_t i = 0;
         if constexpr (has_owner_column<System>) {
-          if (code % 23 == 1) owner = Mirror<System>::owner_for(mirror.next_serial);
+          if (operation == 1) owner = Mirror<System>::owner_for(mirror.next_serial);
           i = owner != 0 ? system.spawn(p, v, owner) : system.spawn(p, v);
         } else {
           i = system.spawn(p, v);
@@ -1458,6 +1716,14 @@ void fuzz_system(Input& in) {
         }
         break;
       }
+      case 23: {
+        if constexpr (Extended) fuzz_throwing_spawn(system, mirror, budget, in, index);
+        break;
+      }
+      case 24: {
+        if constexpr (Extended) fuzz_other_settings(system, mirror, budget, in, index);
+        break;
+      }
       default: break;
     }
     expect_accepted("system operation");
@@ -1471,7 +1737,7 @@ void fuzz_system(Input& in) {
 
 // --- force generators -----------------------------------------------------------------------
 //
-// Inputs whose first byte is 0xF0 or more drive the force generators (even: float, odd:
+// Inputs whose first byte is in [0xF0, 0xF8) drive the force generators (even: float, odd:
 // double): every setter with any value (a rejected one is reported once, naming the setter
 // and argument, and changes nothing), then bodies with any finite state and inverse mass and
 // any duration through every generator. Invariants: a force from finite input is finite, or
@@ -1769,6 +2035,358 @@ void fuzz_forces(Input& in) {
   }
 }
 
+// --- a ForceRegistry whose generators change it during update_forces -------------------------
+//
+// Inputs whose first byte is 0xF8 (float) or 0xF9 (double) drive two ForceRegistry objects
+// over four particles, with generators of a known type and of a type-erased one, owned
+// (add_owned, emplace) or not (add, const or not), checked against a model of the
+// registrations (registry.hpp, ForceRegistry). Outside a pass: add, remove (its result), clear,
+// and replacing a registry (assigning an empty one, moving one into the other, swapping).
+// Armed generators do one of the same to either registry from inside update_forces. A pass
+// calls exactly the registrations present when it began (known types first, then the
+// type-erased, each in the order added) that are not removed before their turn, nothing added
+// during it, and nothing after its registry was replaced; each adds its force once; a
+// removed owned generator lives until the pass ends (it runs on after removing itself) and is
+// destroyed then; later passes, on either registry, call everything registered there.
+
+enum class Act : std::uint8_t {
+  none,
+  add,
+  remove_self,
+  remove_other,
+  clear,
+  assign_new,
+  move_in,
+  swap
+};
+constexpr int acts = 8;
+
+template <class R>
+struct RegistryWorld;
+
+template <class R, bool Known>
+struct Meddler {
+  RegistryWorld<R>* world;
+  int id;
+  Meddler(RegistryWorld<R>* w, int i) : world(w), id(i) { ++world->live; }
+  Meddler(const Meddler& other) : world(other.world), id(other.id) { ++world->live; }
+  Meddler& operator=(const Meddler&) = default;
+  ~Meddler() { --world->live; }
+  // const: a const registration can call it too (its state is the world's)
+  void update_force(Particle<R>& particle, R) const {
+    world->act(id, particle);
+    particle.add_force(RegistryWorld<R>::force_of(id));  // after the act: it is still alive
+  }
+};
+
+template <class R>
+struct RegistryWorld {
+  using Body = Particle<R>;
+  using Known = Meddler<R, true>;
+  using Erased = Meddler<R, false>;
+  using Registry = forces::ForceRegistry<Body, Known>;
+  struct Script {
+    bool armed = false;
+    Act act = Act::none;
+    bool other = false;  // acts on the registry not running
+    std::uint8_t a = 0;
+    std::uint8_t b = 0;
+  };
+  struct Object {
+    void* address;
+    bool known;
+    bool owned;
+  };
+  struct Reg {  // a registration of the model
+    std::uint64_t serial;
+    int id;
+    std::size_t particle;
+    bool known_vector;  // a non-const Known: called before the type-erased ones
+    bool konst;
+  };
+  static constexpr std::size_t max_registrations = 48;
+
+  int live = 0;  // Meddlers alive
+  std::vector<Script> scripts;
+  std::vector<Object> objects;
+  std::array<std::vector<Reg>, 2> model;
+  std::uint64_t next_serial = 0;
+  // the pass in progress
+  bool in_pass = false;
+  std::size_t running = 0;
+  std::vector<Reg> snapshot;
+  std::size_t cursor = 0;
+  bool ended = false;
+  std::array<Vector3<R>, 4> forces{};
+  std::array<Body, 4> bodies{};
+  std::deque<Known> pool_known;
+  std::deque<Erased> pool_erased;
+  std::array<Registry, 2> registries;
+
+  static Vector3<R> force_of(int id) { return {R(1 + id % 29), R(1), R(0)}; }
+  std::size_t body_index(const Body& particle) const {
+    const auto i = static_cast<std::size_t>(&particle - bodies.data());
+    require(i < bodies.size(), "a generator was called for a particle it was not registered on");
+    return i;
+  }
+  int new_object(void* address, bool known, bool owned) {
+    objects.push_back({address, known, owned});
+    scripts.emplace_back();
+    return static_cast<int>(objects.size() - 1);
+  }
+
+  // Registers a generator (flavor % 7: owned known, emplaced known, owned type-erased, and a
+  // pool object: known, type-erased, known const, type-erased const) on body j of registry r.
+  void add(std::size_t r, std::size_t j, std::uint8_t flavor, std::uint8_t pick) {
+    if (model[r].size() >= max_registrations) return;
+    Registry& registry = registries[r];
+    Body& body = bodies[j];
+    int id = -1;
+    bool known_vector = false;
+    bool konst = false;
+    const auto pooled = [&](auto& pool) -> auto& {
+      using G = typename std::decay_t<decltype(pool)>::value_type;
+      if (pick % 4 == 0 || pool.empty() || pool.size() >= 16) {
+        if (pool.size() < 16) {
+          pool.emplace_back(this, static_cast<int>(objects.size()));
+          new_object(&pool.back(), std::is_same_v<G, Known>, false);
+        }
+      }
+      auto& g = pool[pick % pool.size()];
+      id = g.id;
+      return g;
+    };
+    switch (flavor % 7) {
+      case 0: {
+        id = new_object(nullptr, true, true);
+        objects[static_cast<std::size_t>(id)].address = &registry.add_owned(body, Known(this, id));
+        known_vector = true;
+        break;
+      }
+      case 1: {
+        id = new_object(nullptr, true, true);
+        objects[static_cast<std::size_t>(id)].address =
+            &registry.template emplace<Known>(body, this, id);
+        known_vector = true;
+        break;
+      }
+      case 2: {
+        id = new_object(nullptr, false, true);
+        objects[static_cast<std::size_t>(id)].address = &registry.add_owned(body, Erased(this, id));
+        break;
+      }
+      case 3: registry.add(body, pooled(pool_known)), known_vector = true; break;
+      case 4: registry.add(body, pooled(pool_erased)); break;
+      case 5: registry.add(body, std::as_const(pooled(pool_known))), konst = true; break;
+      default: registry.add(body, std::as_const(pooled(pool_erased))), konst = true; break;
+    }
+    model[r].push_back({next_serial++, id, j, known_vector, konst});
+  }
+
+  // The model's remove: the first const registration of the object on the particle (a const
+  // one is type-erased whatever its type, and looked for first), else its first other one.
+  bool model_remove(std::size_t r, std::size_t j, int id) {
+    auto& regs = model[r];
+    for (const bool konst : {true, false}) {
+      for (auto it = regs.begin(); it != regs.end(); ++it) {
+        if (it->particle == j && it->id == id && it->konst == konst) {
+          regs.erase(it);
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+  void remove(std::size_t r, std::size_t j, int id) {
+    const Object& o = objects[static_cast<std::size_t>(id)];
+    const bool removed =
+        o.known ? registries[r].remove(bodies[j], *static_cast<const Known*>(o.address))
+                : registries[r].remove(bodies[j], *static_cast<const Erased*>(o.address));
+    require(removed == model_remove(r, j, id), "remove's result differs from the model");
+  }
+  // An object that is alive: a pool object, or an owned one still registered.
+  int pick_object(std::uint8_t b) const {
+    std::vector<int> alive;
+    for (std::size_t id = 0; id < objects.size(); ++id) {
+      bool registered = !objects[id].owned;
+      for (const auto& regs : model) {
+        for (const auto& reg : regs) registered = registered || reg.id == static_cast<int>(id);
+      }
+      if (registered) alive.push_back(static_cast<int>(id));
+    }
+    return alive.empty() ? -1 : alive[b % alive.size()];
+  }
+  // A particle the object is registered on (b even, when it is), else any.
+  std::size_t pick_particle(int id, std::uint8_t b) const {
+    if (b % 2 == 0) {
+      for (const auto& regs : model) {
+        for (const auto& reg : regs) {
+          if (reg.id == id) return reg.particle;
+        }
+      }
+    }
+    return b / 2 % bodies.size();
+  }
+
+  // Does `act` to registry r (and the model); true when it replaced registry `running`.
+  bool perform(Act act, std::size_t r, std::uint8_t a, std::uint8_t b, int self,
+               std::size_t self_body) {
+    switch (act) {
+      case Act::none: return false;
+      case Act::add: add(r, a % 4, b, a / 4); return false;
+      case Act::remove_self:
+        if (self >= 0) remove(r, self_body, self);
+        return false;
+      case Act::remove_other: {
+        const int id = pick_object(b);
+        if (id >= 0) remove(r, pick_particle(id, a), id);
+        return false;
+      }
+      case Act::clear:
+        registries[r].clear();
+        model[r].clear();
+        return false;
+      case Act::assign_new:
+        registries[r] = Registry{};
+        model[r].clear();
+        return in_pass && r == running;
+      case Act::move_in:  // the other registry moved into r (or r into itself: nothing)
+        if (a % 4 == 0) {
+          Registry& same = registries[r];
+          registries[r] = std::move(same);
+          return false;
+        }
+        registries[r] = std::move(registries[1 - r]);
+        model[r] = std::move(model[1 - r]);
+        model[1 - r].clear();
+        return in_pass;
+      default:
+        std::swap(registries[0], registries[1]);
+        std::swap(model[0], model[1]);
+        return in_pass;
+    }
+  }
+
+  // A generator's call: the model's next registration of the pass, and its act if armed.
+  void act(int id, Body& particle) {
+    require(in_pass, "a generator was called outside update_forces");
+    require(!ended, "a generator was called after its registry was replaced");
+    const std::size_t j = body_index(particle);
+    const auto present = [&](const Reg& reg) {
+      for (const auto& r : model[running]) {
+        if (r.serial == reg.serial) return true;
+      }
+      return false;
+    };
+    while (cursor < snapshot.size() && !present(snapshot[cursor])) ++cursor;
+    require(cursor < snapshot.size(), "update_forces called a registration added during it");
+    const Reg expected = snapshot[cursor++];
+    require(expected.id == id && expected.particle == j,
+            "update_forces called another registration than the model's next");
+    forces[j] += force_of(id);
+    const Script s = scripts[static_cast<std::size_t>(id)];  // an add may reallocate them
+    if (!s.armed) return;
+    scripts[static_cast<std::size_t>(id)].armed = false;
+    const std::size_t r = s.other ? 1 - running : running;
+    if (perform(s.act, r, s.a, s.b, r == running ? id : -1, j)) ended = true;
+  }
+
+  void update(std::size_t r, R t) {
+    for (auto& body : bodies) body.clear_accumulator();
+    forces = {};
+    snapshot.clear();
+    for (const bool known_vector : {true, false}) {
+      for (const auto& reg : model[r]) {
+        if (reg.known_vector == known_vector) snapshot.push_back(reg);
+      }
+    }
+    cursor = 0;
+    ended = false;
+    running = r;
+    in_pass = true;
+    registries[r].update_forces(t);
+    in_pass = false;
+    if (!real_isfinite(t) || t < R(0)) {
+      expect_rejected("ForceRegistry::update_forces", "duration", t);
+      require(cursor == 0, "a rejected update_forces called a generator");
+    }
+    if (!ended && real_isfinite(t) && t >= R(0)) {
+      const auto present = [&](const Reg& reg) {
+        for (const auto& x : model[r]) {
+          if (x.serial == reg.serial) return true;
+        }
+        return false;
+      };
+      while (cursor < snapshot.size() && !present(snapshot[cursor])) ++cursor;
+      require(cursor == snapshot.size(), "update_forces skipped a registration");
+    }
+    for (std::size_t j = 0; j < bodies.size(); ++j) {
+      require(identical(bodies[j].force_accumulator(), forces[j]),
+              "a particle's force differs from its generators' calls");
+    }
+  }
+
+  void check() const {
+    std::size_t owned = 0;
+    for (std::size_t r = 0; r < 2; ++r) {
+      require(registries[r].size() == model[r].size() && registries[r].empty() == model[r].empty(),
+              "a registry's size differs from the model");
+      for (const auto& reg : model[r]) owned += objects[static_cast<std::size_t>(reg.id)].owned;
+    }
+    require(static_cast<std::size_t>(live) == owned + pool_known.size() + pool_erased.size(),
+            "owned generators alive differ from those registered");
+  }
+};
+
+template <class R>
+void fuzz_registry(Input& in) {
+  RegistryWorld<R> world;
+  for (int op = 0; op < 200 && !in.empty(); ++op) {
+    const std::uint8_t code = in.byte();
+    const std::size_t r = (code / 8) % 2;
+    switch (code % 8) {
+      case 0:
+      case 1: {
+        const std::uint8_t flavor = in.byte();
+        const std::uint8_t pick = in.byte();
+        world.add(r, flavor % 4, flavor / 4, pick);
+        break;
+      }
+      case 2:
+      case 3: {  // arm an object: its next call acts
+        const int id = world.pick_object(in.byte());
+        const std::uint8_t how = in.byte();
+        const std::uint8_t a = in.byte();
+        const std::uint8_t b = in.byte();
+        if (id >= 0)
+          world.scripts[static_cast<std::size_t>(id)] = {true, static_cast<Act>(how % acts),
+                                                         (how / acts) % 2 == 1, a, b};
+        break;
+      }
+      case 4:
+      case 5: world.update(r, in.number<R>()); break;
+      case 6: {  // remove from outside a pass
+        const int id = world.pick_object(in.byte());
+        const std::uint8_t b = in.byte();
+        if (id >= 0) world.remove(r, world.pick_particle(id, b), id);
+        break;
+      }
+      default: {  // clear or replace from outside a pass
+        const std::uint8_t how = in.byte();
+        constexpr Act replacements[] = {Act::clear, Act::assign_new, Act::move_in, Act::swap};
+        world.perform(replacements[how % 4], r, in.byte(), 0, -1, 0);
+        break;
+      }
+    }
+    expect_accepted("registry operation");
+    world.check();
+  }
+  world.registries[0] = {};
+  world.registries[1] = {};
+  world.model = {};
+  world.check();
+}
+
 // --- the configurations ---------------------------------------------------------------------
 
 template <class R, class D, class P>
@@ -1778,6 +2396,10 @@ struct ParticleConfig {
 template <class System>
 struct SystemConfig {
   static void run(Input& in) { fuzz_system<System>(in); }
+};
+template <class System>
+struct ExtendedConfig {
+  static void run(Input& in) { fuzz_system<System, true>(in); }
 };
 
 template <class R>
@@ -1876,6 +2498,12 @@ using WideConfigs = std::tuple<
         ParticleSystem<Precision<float, double>, damping::PerSecond, position::SemiImplicit,
                        features::Lifetime, features::Interpolation, features::Handles>>>;
 
+// The systems with a user column that throws, driven through the other checks setting too
+// (fuzz_shared.hpp), chosen by a first byte from 0xFA.
+using ExtendedConfigs =
+    std::tuple<ExtendedConfig<fuzz::FuseFloat>, ExtendedConfig<fuzz::FuseDouble>,
+               ExtendedConfig<fuzz::FuseExact>, ExtendedConfig<fuzz::FuseCompensated>>;
+
 template <class Tuple, std::size_t... I>
 void dispatch(std::size_t which, Input& in, std::index_sequence<I...>) {
   ((which == I ? (std::tuple_element_t<I, Tuple>::run(in), 0) : 0), ...);
@@ -1889,7 +2517,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   report = {};
   Input in(data, size);
   const std::uint8_t first = in.byte();
-  if (first >= 0xF0) {  // the force generators
+  if (first >= 0xFA) {  // a user column that throws, and the other checks setting
+    constexpr std::size_t count = std::tuple_size_v<ExtendedConfigs>;
+    dispatch<ExtendedConfigs>((first - 0xFAu) % count, in, std::make_index_sequence<count>{});
+    return 0;
+  }
+  if (first >= 0xF8) {  // generators that change their registry during update_forces
+    if (first % 2 == 0) fuzz_registry<float>(in);
+    else fuzz_registry<double>(in);
+    return 0;
+  }
+  if (first >= 0xF0) {  // the force generators (0xF0 to 0xF7)
     if (first % 2 == 0) fuzz_forces<float>(in);
     else fuzz_forces<double>(in);
     return 0;
