@@ -339,7 +339,9 @@ class BasicParticle {
     const real t = Q::raw(duration);
     // Nothing changes, the accumulated force waits. A comparison, as ParticleSystem's step
     // makes: where the mode reads denormals as zero (FlushDenormals), a subnormal t is zero.
-    if (real_equal(t, real(0))) return;
+    // Written as t > 0 (t >= 0 here): t == 0 slowed the fixed-step loop 6% (g++ 12, float;
+    // the engine table's Particle rows).
+    if (!(t > real(0))) return;
     if (detail::is_zero(inverse_mass_)) {  // immovable: forces cannot move it
       force_accumulator_ = {};
       return;
