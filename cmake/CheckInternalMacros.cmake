@@ -2,9 +2,10 @@
 cmake_minimum_required(VERSION 3.21)
 # cmake -DCOMPILER=c++ "-DINCLUDE_DIRS=x|y" -DSOURCE=all.cpp -P CheckInternalMacros.cmake
 # SOURCE includes every public header. Preprocessed, no internal macro (POINTMASS_DETAIL_*)
-# may be left defined at its end but POINTMASS_DETAIL_ALWAYS_INLINE and POINTMASS_DETAIL_IN_ORDER,
-# which config.hpp defines for every header of the step (docs/design.md): the others are
-# #undef'd by the header that defines them, so none reaches a user's code.
+# may be left defined at its end but POINTMASS_DETAIL_ALWAYS_INLINE, POINTMASS_DETAIL_IN_ORDER and
+# POINTMASS_DETAIL_UNFUSED_BEGIN / _END, which config.hpp defines for every header
+# (docs/design.md): the others are #undef'd by the header that defines them, so none reaches a
+# user's code.
 string(REPLACE "|" ";" _dirs "${INCLUDE_DIRS}")
 list(REMOVE_ITEM _dirs "")
 list(TRANSFORM _dirs PREPEND "-I")
@@ -19,9 +20,10 @@ list(FIND _defined POINTMASS_DETAIL_ALWAYS_INLINE _kept)
 if(_kept EQUAL -1)
   message(FATAL_ERROR "POINTMASS_DETAIL_ALWAYS_INLINE is not defined: were the headers read?")
 endif()
-list(REMOVE_ITEM _defined POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_DETAIL_IN_ORDER)
+list(REMOVE_ITEM _defined POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_DETAIL_IN_ORDER
+     POINTMASS_DETAIL_UNFUSED_BEGIN POINTMASS_DETAIL_UNFUSED_END)
 if(_defined)
   list(JOIN _defined ", " _names)
   message(FATAL_ERROR "internal macros left defined for the user's code: ${_names}")
 endif()
-message(STATUS "no internal macro but POINTMASS_DETAIL_ALWAYS_INLINE and _IN_ORDER is left defined")
+message(STATUS "no internal macro but POINTMASS_DETAIL_ALWAYS_INLINE, _IN_ORDER and _UNFUSED_* is left defined")

@@ -18,7 +18,8 @@
 // returns, the call that failed its check returns without changing anything.
 //
 // Owns: the version, POINTMASS_HD, the checks settings (POINTMASS_CHECKS, POINTMASS_HOST_CHECKS),
-// the inline namespace keyed by the exceptions setting, and the contract handler.
+// the inline namespace keyed by the exceptions setting, the contract handler, and the scope of
+// the library's uncontracted arithmetic (POINTMASS_DETAIL_UNFUSED_BEGIN / _END).
 // Must not include: any other pointmass header (every header includes this one).
 #pragma once
 
@@ -103,6 +104,21 @@
 #define POINTMASS_DETAIL_IN_ORDER _Pragma("clang fp reassociate(off)")
 #else
 #define POINTMASS_DETAIL_IN_ORDER
+#endif
+// The library's arithmetic is what it is written as, whatever the consumer's contraction
+// setting: every header's code lies between POINTMASS_DETAIL_UNFUSED_BEGIN and _END (a test
+// checks), which with clang turn contraction (a * b + c into one fused multiply-add) off there
+// and restore the consumer's setting after; -ffp-contract=fast (and -ffast-math) overrides them.
+// g++ has no such scope: it decides contraction per function, after inlining, and an optimize
+// attribute would keep the library from being inlined at all. Its consumers compile with
+// -ffp-contract=off (pointmass::strict_fp), see docs/numerics.md.
+#if defined(__clang__) && !defined(__NVCC__)
+#define POINTMASS_DETAIL_UNFUSED_BEGIN \
+  _Pragma("float_control(push)") _Pragma("clang fp contract(off)")
+#define POINTMASS_DETAIL_UNFUSED_END _Pragma("float_control(pop)")
+#else
+#define POINTMASS_DETAIL_UNFUSED_BEGIN
+#define POINTMASS_DETAIL_UNFUSED_END
 #endif
 #if defined(__ASSOCIATIVE_MATH__) && !defined(__clang__)
 #error \

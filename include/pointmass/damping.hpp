@@ -56,6 +56,7 @@
 // (POINTMASS_DETAIL_ALWAYS_INLINE): g++ -O2 would otherwise call them per particle, and a call
 // stops vectorisation.
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::damping {
 
 /// A damping value d in [0, 1]; the states of the policies that store one.
@@ -351,3 +352,4 @@ struct NoKeptFactors {};
 }  // namespace detail
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

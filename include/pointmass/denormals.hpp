@@ -56,6 +56,7 @@
 #define POINTMASS_DETAIL_FLUSH_REGISTER 0
 #endif
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 namespace detail {
@@ -167,5 +168,6 @@ class FlushDenormals {
 };
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END
 
 #undef POINTMASS_DETAIL_FLUSH_REGISTER

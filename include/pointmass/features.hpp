@@ -19,8 +19,8 @@
 #include "precision.hpp"
 #include "real.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::features {
-
 /// Each particle has its own damping value (set_damping(i, d)).
 struct PerParticleDamping {};
 /// Each particle has its own acceleration (set_acceleration(i, a)); otherwise one for all.
@@ -445,6 +445,6 @@ struct SystemLayout {
 #undef POINTMASS_DETAIL_ENTRY
 #undef POINTMASS_DETAIL_MEMBER
 #undef POINTMASS_DETAIL_COLUMNS
-
 }  // namespace detail
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

@@ -26,6 +26,7 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// The position at the fraction alpha in [0, 1] between `previous` and `current`: alpha 0
@@ -122,3 +123,4 @@ class FixedStep {
 };
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

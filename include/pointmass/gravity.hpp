@@ -14,6 +14,7 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 template <Real R>
@@ -30,3 +31,4 @@ template <Real R>
 }
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

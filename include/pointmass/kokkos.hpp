@@ -60,6 +60,7 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 namespace detail {
@@ -427,3 +428,4 @@ class KokkosSystem {
 };
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

@@ -23,6 +23,7 @@
 #include "denormals.hpp"
 #include "particle_system.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 namespace detail {
@@ -128,3 +129,4 @@ void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system
 }
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

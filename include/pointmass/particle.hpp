@@ -41,6 +41,7 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// One step of the model on one body's values, the damping factors already computed.
@@ -448,3 +449,4 @@ template <class R, DampingPolicy D = damping::PerSecond, class P = position::Eul
 using Particle = BasicParticle<PlainQuantities<R>, D, P>;
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

@@ -54,6 +54,7 @@
 #include "system/lifetime.hpp"
 #include "vector3.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 // The facets (detail::SystemFacets, below) stand in one line rather than one base each, so that
 // no two empty bases share a type (an API probe compares sizeof with the state's). A facet's
@@ -431,6 +432,7 @@ class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D
 };
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END
 
 // StepView, and what the library's own steps reach of the state.
 #include "detail/system_access.hpp"

@@ -44,6 +44,7 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::position {
 
 /// Millington's short form: p1 = p0 + v0 t, with the velocity from the start of the step.
@@ -286,3 +287,4 @@ constexpr bool check_policy_pair() {
 }  // namespace detail
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

@@ -49,6 +49,7 @@
 #include "config.hpp"
 #include "real.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// A position stored as two R: the rounded position and the rounding error carried forward.
@@ -405,3 +406,4 @@ template <class S>
 using position_value_t = typename detail::PositionStorage<position_precision_of_t<S>>::value;
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

@@ -22,6 +22,7 @@
 #include "precision.hpp"
 #include "real.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// S is a Real (every value a number of S) or a Precision<R, Position> (precision.hpp):
@@ -90,3 +91,4 @@ struct QuantityPositions<Q> {
 }  // namespace detail
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

@@ -24,6 +24,7 @@
 
 #include "config.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// The precisions the library computes in.
@@ -294,3 +295,4 @@ template <class T>
 }
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

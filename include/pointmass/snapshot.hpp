@@ -26,6 +26,7 @@
 #include "detail/hash64.hpp"
 #include "particle_system.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 namespace detail {
@@ -445,3 +446,4 @@ class Snapshot<ParticleSystem<S, D, P, Features...>> {
 };
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

@@ -43,6 +43,7 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// A coordinate of a position.
@@ -187,3 +188,4 @@ template <Real R, class D>
 }
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

@@ -69,6 +69,7 @@
 #include "real.hpp"
 #include "vector3.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::units {
 
 namespace bu = ::boost::units;
@@ -342,3 +343,4 @@ struct TimeTraits<::boost::units::quantity<::boost::units::si::time, Y>> {
 };
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

@@ -27,6 +27,7 @@
 #include "config.hpp"
 #include "real.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 template <class T>
@@ -344,3 +345,4 @@ template <Real T>
 }
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

@@ -36,8 +36,8 @@
 // tests/test_exponential.cpp checks the bounds).
 //
 // It relies on IEEE arithmetic rounding to nearest, in the order written (under
-// -fassociative-math: POINTMASS_DETAIL_IN_ORDER, config.hpp). Fused multiply-adds, where the
-// compiler contracts, only make the steps more accurate.
+// -fassociative-math: POINTMASS_DETAIL_IN_ORDER, config.hpp) and unfused: contracted (g++
+// without -ffp-contract=off), the steps are more accurate but no longer the same bits.
 //
 // Owns: the library's own exponential and d^t, the branch-free selects, and the phi series.
 // Must not include: anything but config.hpp, real.hpp and detail/logarithm.hpp (the policies
@@ -56,6 +56,7 @@
 // (POINTMASS_DETAIL_ALWAYS_INLINE): clang and g++ would otherwise call the larger of them
 // (exp_unit) from a loop, and a call stops vectorisation.
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 /// 1 / (k + 2)!, the coefficient of r^k in (e^r - 1 - r) / r^2, computed at compile time.
@@ -368,3 +369,4 @@ POINTMASS_HD constexpr R phi_series(R x) noexcept {
 }
 
 }  // namespace pointmass::detail
+POINTMASS_DETAIL_UNFUSED_END

@@ -28,6 +28,7 @@
 #include "../config.hpp"
 #include "../features.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 /// Stands in for the table when a configuration has no handles: stores nothing.
@@ -120,3 +121,4 @@ class HandleTable {
 };
 
 }  // namespace pointmass::detail
+POINTMASS_DETAIL_UNFUSED_END

@@ -13,6 +13,7 @@
 
 #include "../config.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 class Hash64 {
@@ -97,3 +98,4 @@ class Hash64 {
 };
 
 }  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail
+POINTMASS_DETAIL_UNFUSED_END

@@ -22,6 +22,7 @@
 #include "../config.hpp"
 #include "../real.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 /// What the exponential and split_log need of each precision (float and double).
@@ -286,3 +287,4 @@ POINTMASS_HD constexpr SplitLog<R> split_log(R d) noexcept {
 }
 
 }  // namespace pointmass::detail
+POINTMASS_DETAIL_UNFUSED_END

@@ -23,6 +23,7 @@
 
 #include "../config.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 template <class Layout>
@@ -126,3 +127,4 @@ class SoaBlock {
 };
 
 }  // namespace pointmass::detail
+POINTMASS_DETAIL_UNFUSED_END

@@ -13,6 +13,7 @@
 
 #include "../particle_system.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 namespace detail {
@@ -109,3 +110,4 @@ struct SystemAccess {
 }  // namespace detail
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END

@@ -42,9 +42,8 @@
 #define POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
 #endif
 
-// The step kernel is inlined into its loop even at -O2 (POINTMASS_DETAIL_ALWAYS_INLINE): a call
-// stops vectorisation.
-
+// The step kernel is inlined into its loop at any -O level: a call stops vectorisation.
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 struct NoFactors {};
@@ -446,5 +445,6 @@ class SystemKernel {
 };
 
 }  // namespace pointmass::detail
+POINTMASS_DETAIL_UNFUSED_END
 
 #undef POINTMASS_DETAIL_INDEPENDENT_ITERATIONS

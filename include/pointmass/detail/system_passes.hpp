@@ -22,6 +22,7 @@
 #include "system_state.hpp"
 #include "validate.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 // The expiry pass without a callback.
@@ -425,3 +426,4 @@ template <class S, DampingPolicy D, class P, class... Features>
 class SystemStateBase : protected SystemPasses<S, D, P, Features...> {};
 
 }  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail
+POINTMASS_DETAIL_UNFUSED_END

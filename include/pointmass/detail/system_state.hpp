@@ -35,8 +35,8 @@
 #include "system_kernel.hpp"
 #include "validate.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
-
 // What parallel.hpp's step reaches beyond a system's public API (a friend of ParticleSystem).
 struct SystemAccess;
 
@@ -446,5 +446,5 @@ class SystemState {
     }
   }
 };
-
 }  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail
+POINTMASS_DETAIL_UNFUSED_END

@@ -23,6 +23,7 @@
 #include "../real.hpp"
 #include "../vector3.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 /// A vector with three finite components.
@@ -304,3 +305,4 @@ constexpr bool check_range(const char* function, std::size_t begin, std::size_t 
 }
 
 }  // namespace pointmass::detail
+POINTMASS_DETAIL_UNFUSED_END

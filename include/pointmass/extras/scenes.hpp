@@ -20,6 +20,7 @@
 #include "../real.hpp"
 #include "../vector3.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::scenes {
 
 /// One of Cyclone's ballistic shots: launched from `origin` with `velocity`,
@@ -156,3 +157,4 @@ inline constexpr std::array<double, 4> standard_frame_times{1.0 / 30, 1.0 / 60, 
                                                             1.0 / 240};
 
 }  // namespace pointmass::scenes
+POINTMASS_DETAIL_UNFUSED_END

@@ -20,6 +20,7 @@
 #include "../vector3.hpp"
 #include "bodies.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::forces {
 
 /// A generator that computes a body's force from its own state alone.
@@ -137,3 +138,4 @@ void apply(const G&, B&, typename B::real) {
 }
 
 }  // namespace pointmass::forces
+POINTMASS_DETAIL_UNFUSED_END

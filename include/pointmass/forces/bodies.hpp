@@ -21,6 +21,7 @@
 #include "../real.hpp"
 #include "../vector3.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::forces {
 
 /// A particle over plain R numbers (Particle<R, D, P> for any policies D, P).
@@ -272,3 +273,4 @@ template <WideBodies B>
 }
 
 }  // namespace pointmass::forces
+POINTMASS_DETAIL_UNFUSED_END

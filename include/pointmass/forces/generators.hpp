@@ -19,10 +19,9 @@
 #include "../vector3.hpp"
 #include "bodies.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::forces {
-
 namespace detail {
-
 /// The separation p - q as a unit direction and a length in units of `scale`: the length
 /// |p - q| = length * scale, scale 1 unless p - q or its length overflows (then 4).
 template <Real R>
@@ -448,3 +447,4 @@ constexpr void apply_links(
 }
 
 }  // namespace pointmass::forces
+POINTMASS_DETAIL_UNFUSED_END

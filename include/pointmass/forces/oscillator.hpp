@@ -20,6 +20,7 @@
 #include "../vector3.hpp"
 #include "bodies.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::forces {
 
 /// A position and velocity (relative to the oscillator's rest point).
@@ -357,3 +358,4 @@ class PositionOnlyStiffSpring : public StiffSpringParameters<R> {
 };
 
 }  // namespace pointmass::forces
+POINTMASS_DETAIL_UNFUSED_END

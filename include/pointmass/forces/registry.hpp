@@ -21,6 +21,7 @@
 
 #include "apply.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::forces {
 
 /// What a registry can hold for particles of type P.
@@ -339,3 +340,4 @@ class ForceRegistry {
 };
 
 }  // namespace pointmass::forces
+POINTMASS_DETAIL_UNFUSED_END

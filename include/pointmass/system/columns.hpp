@@ -26,6 +26,7 @@
 #include "../detail/validate.hpp"
 #include "../features.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 template <class Base>
@@ -109,3 +110,4 @@ class SystemColumns : public Base {
 };
 
 }  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail
+POINTMASS_DETAIL_UNFUSED_END

@@ -18,6 +18,7 @@
 #include "../features.hpp"
 #include "../vector3.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 template <class Base>
@@ -140,3 +141,4 @@ class SystemDeprecated : public Base {
 };
 
 }  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail
+POINTMASS_DETAIL_UNFUSED_END

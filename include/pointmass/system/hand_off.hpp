@@ -26,6 +26,7 @@
 #include "../detail/validate.hpp"
 #include "../vector3.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 template <class Base>
@@ -86,3 +87,4 @@ class SystemHandOff : public Base {
 };
 
 }  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail
+POINTMASS_DETAIL_UNFUSED_END

@@ -24,6 +24,7 @@
 #include "../config.hpp"
 #include "../detail/handle_table.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 template <class Base>
@@ -62,3 +63,4 @@ class SystemHandles : public Base {
 };
 
 }  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail
+POINTMASS_DETAIL_UNFUSED_END

@@ -22,6 +22,7 @@
 #include "../detail/validate.hpp"
 #include "../real.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 template <class Base>
@@ -52,3 +53,4 @@ class SystemLifetime : public Base {
 };
 
 }  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail
+POINTMASS_DETAIL_UNFUSED_END

@@ -16,6 +16,7 @@
 
 #include "../particle_system.hpp"
 
+POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
 
 /// The step that ParticleSystem::begin_step(duration) began: the arrays, the step's
@@ -77,3 +78,4 @@ class ParticleSystem<S, D, P, Features...>::StepView {
 };
 
 }  // namespace pointmass
+POINTMASS_DETAIL_UNFUSED_END
