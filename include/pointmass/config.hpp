@@ -105,14 +105,19 @@
 #else
 #define POINTMASS_DETAIL_IN_ORDER
 #endif
-// The library's arithmetic is what it is written as, whatever the consumer's contraction
-// setting: every header's code lies between POINTMASS_DETAIL_UNFUSED_BEGIN and _END (a test
-// checks), which with clang turn contraction (a * b + c into one fused multiply-add) off there
-// and restore the consumer's setting after; -ffp-contract=fast (and -ffast-math) overrides them.
+// POINTMASS_STRICT_FP=1 (pointmass::strict_fp defines it): the library's arithmetic is what
+// it is written as, whatever the consumer's contraction setting. Every header's code lies
+// between POINTMASS_DETAIL_UNFUSED_BEGIN and _END (a test checks), which with clang then turn
+// contraction (a * b + c into one fused multiply-add) off there and restore the consumer's
+// setting after; -ffp-contract=fast (and -ffast-math) overrides them. Not the default: with
+// FMA, unfused arithmetic slows the exponential's polynomial (a changing step) up to 2x.
 // g++ has no such scope: it decides contraction per function, after inlining, and an optimize
 // attribute would keep the library from being inlined at all. Its consumers compile with
-// -ffp-contract=off (pointmass::strict_fp), see docs/numerics.md.
-#if defined(__clang__) && !defined(__NVCC__)
+// -ffp-contract=off (pointmass::strict_fp adds it), see docs/numerics.md.
+#ifndef POINTMASS_STRICT_FP
+#define POINTMASS_STRICT_FP 0
+#endif
+#if defined(__clang__) && !defined(__NVCC__) && POINTMASS_STRICT_FP
 #define POINTMASS_DETAIL_UNFUSED_BEGIN \
   _Pragma("float_control(push)") _Pragma("clang fp contract(off)")
 #define POINTMASS_DETAIL_UNFUSED_END _Pragma("float_control(pop)")
