@@ -41,7 +41,7 @@ Fireworks fireworks(std::size_t n) {
 }
 
 void set_counters(benchmark::State& state, std::size_t n) {
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
 }
 
 void BM_Save(benchmark::State& state) {
