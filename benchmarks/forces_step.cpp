@@ -60,7 +60,20 @@ R mass_of(std::size_t k) {
   return R(1) + static_cast<R>(k % 5) / R(4);
 }
 
-void set_counters(benchmark::State& state) {
+// The job's two laws, as pointmass's generators.
+template <class R>
+struct Laws {
+  forces::Drag<R> drag{k1<R>, k2<R>};
+  forces::AnchoredSpring<R> spring{{R(0), R(0), R(0)}, stiffness<R>, rest<R>};
+};
+
+// Runs `frame` once an iteration; items_per_second = particle-steps/s.
+template <class Frame>
+void time_frames(benchmark::State& state, Frame&& frame) {
+  for (auto _ : state) {
+    frame();
+    benchmark::ClobberMemory();
+  }
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
@@ -84,12 +97,10 @@ void BM_Cyclone(benchmark::State& state) {
     registry.add(&particles[k], &drags[k]);
     registry.add(&particles[k], &springs[k]);
   }
-  for (auto _ : state) {
+  time_frames(state, [&] {
     registry.update_forces(duration<R>());
     for (auto& particle : particles) particle.integrate(duration<R>());
-    benchmark::ClobberMemory();
-  }
-  set_counters(state);
+  });
 }
 
 template <class R>
@@ -112,36 +123,30 @@ template <class R>
 void BM_Registry(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
   auto particles = bodies<R>(n);
-  forces::Drag<R> drag(k1<R>, k2<R>);
-  forces::AnchoredSpring<R> spring({R(0), R(0), R(0)}, stiffness<R>, rest<R>);
+  Laws<R> laws;
   forces::ForceRegistry<Body<R>, forces::Drag<R>, forces::AnchoredSpring<R>> registry;
   for (auto& particle : particles) {
-    registry.add(particle, drag);
-    registry.add(particle, spring);
+    registry.add(particle, laws.drag);
+    registry.add(particle, laws.spring);
   }
-  for (auto _ : state) {
+  time_frames(state, [&] {
     registry.update_forces(duration<R>());
     for (auto& particle : particles) particle.integrate(duration<R>());
-    benchmark::ClobberMemory();
-  }
-  set_counters(state);
+  });
 }
 
 template <class R>
 void BM_UpdateForce(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
   auto particles = bodies<R>(n);
-  forces::Drag<R> drag(k1<R>, k2<R>);
-  forces::AnchoredSpring<R> spring({R(0), R(0), R(0)}, stiffness<R>, rest<R>);
-  for (auto _ : state) {
+  Laws<R> laws;
+  time_frames(state, [&] {
     for (auto& particle : particles) {
-      forces::update_force(drag, particle, duration<R>());
-      forces::update_force(spring, particle, duration<R>());
+      forces::update_force(laws.drag, particle, duration<R>());
+      forces::update_force(laws.spring, particle, duration<R>());
       particle.integrate(duration<R>());
     }
-    benchmark::ClobberMemory();
-  }
-  set_counters(state);
+  });
 }
 
 template <class R>
@@ -158,15 +163,12 @@ void BM_SystemApply(benchmark::State& state) {
     system.set_damping(i, kept_per_second<R>);
     system.set_mass(i, mass_of<R>(k));
   }
-  forces::Drag<R> drag(k1<R>, k2<R>);
-  forces::AnchoredSpring<R> spring({R(0), R(0), R(0)}, stiffness<R>, rest<R>);
-  for (auto _ : state) {
-    forces::apply(drag, system, duration<R>());
-    forces::apply(spring, system, duration<R>());
+  const Laws<R> laws;
+  time_frames(state, [&] {
+    forces::apply(laws.drag, system, duration<R>());
+    forces::apply(laws.spring, system, duration<R>());
     system.step(duration<R>());
-    benchmark::ClobberMemory();
-  }
-  set_counters(state);
+  });
 }
 
 // Both forces and the step in one pass over a plain struct, d^t kept per particle (as a
@@ -185,7 +187,7 @@ void BM_HandFused(benchmark::State& state) {
     particles[k] = {start_position<R>(k), start_velocity<R>(k), R(1) / mass_of<R>(k),
                     std::pow(kept_per_second<R>, duration<R>())};
   }
-  for (auto _ : state) {
+  time_frames(state, [&] {
     const R t = duration<R>();
     for (auto& b : particles) {
       const Vector3<R> v = b.velocity;
@@ -199,9 +201,7 @@ void BM_HandFused(benchmark::State& state) {
       b.position = b.position + v * t;
       b.velocity = v * b.retention + a * t;
     }
-    benchmark::ClobberMemory();
-  }
-  set_counters(state);
+  });
 }
 
 void sizes(benchmark::internal::Benchmark* b) {
