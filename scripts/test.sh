@@ -72,7 +72,7 @@ for configuration in "${configurations[@]}"; do
         "-DPOINTMASS_TEST_SUITES=core;contracts;system;forces;precision;hardening" \
         -DPOINTMASS_FUZZ_REPLAY=OFF -DPOINTMASS_NO_EXCEPTIONS_EQUIVALENCE=OFF
       ctest_arguments=(--exclude-regex
-        "^(docs|packaging)\.|^hardening\.(packaging\.recipes|cuda|doxygen)$")
+        "^(docs|packaging)\.|^hardening\.(packaging\.recipes|cuda|doxygen(\.no_internals)?)$")
       ;;
     sanitize)
       configure_and_build "$dir" -DCMAKE_CXX_COMPILER=g++ "${debug[@]}" "${lean[@]}" \
