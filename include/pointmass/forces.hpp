@@ -24,5 +24,6 @@
 #include "forces/apply.hpp"
 #include "forces/bodies.hpp"
 #include "forces/generators.hpp"
+#include "forces/laws.hpp"
 #include "forces/oscillator.hpp"
 #include "forces/registry.hpp"

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <execution>
 #include <iterator>
@@ -80,19 +81,26 @@ namespace detail {
 /// The particles' step on `policy`, in chunks of 16,384 (each through the vectorised loop),
 /// each under the calling thread's flush-to-zero modes (denormals.hpp), on whichever thread
 /// runs it; false when there was nothing to do (see begin_step).
-template <class ExecutionPolicy, class System, class R>
-typename System::StepView step_chunks(ExecutionPolicy&& policy, System& system, R duration) {
+/// With `laws` (forces::Laws), fused in as ParticleSystem::step(duration, laws) fuses them;
+/// `beyond` gets the laws whose force was beyond range on some particle (Laws::add).
+template <class ExecutionPolicy, class System, class R, class Laws = NoLaws>
+typename System::StepView step_chunks(ExecutionPolicy&& policy, System& system, R duration,
+                                      const Laws& laws = {}, unsigned* beyond = nullptr) {
   typename System::StepView view = SystemAccess::begin_step(system, duration);
   constexpr std::size_t chunk = 16384;
   const std::size_t size = view.size();
   const std::size_t chunks = (size + chunk - 1) / chunk;
   const unsigned modes = FlushModeBits::modes();
+  std::atomic<unsigned> found{0};
   std::for_each(std::forward<ExecutionPolicy>(policy), CountingIterator(0),
                 CountingIterator(chunks), [&](std::size_t c) {
                   const SameFlushModes same_modes(modes);
                   const std::size_t begin = c * chunk;
-                  view.step_range(begin, std::min(begin + chunk, size));
+                  const unsigned bits = SystemAccess::Kernel<System>::step_range(
+                      view.arrays(), begin, std::min(begin + chunk, size), view.parameters(), laws);
+                  if (bits != 0) found.fetch_or(bits, std::memory_order_relaxed);
                 });
+  if (beyond != nullptr) *beyond = found.load(std::memory_order_relaxed);
   return view;
 }
 
@@ -126,6 +134,33 @@ void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system
   detail::SystemAccess::finish_step(
       system, detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration),
       on_expire);
+}
+
+/// As step(policy, system, duration), with `laws` (forces::Laws) fused into each chunk's loop,
+/// as system.step(duration, laws) fuses them, bit for bit; a law whose force was beyond range
+/// is reported after the step, on the calling thread. (Sub-steps: system.step on one thread.)
+template <class ExecutionPolicy, class S, class D, class P, class... Features, class... G>
+  requires(std::is_execution_policy_v<std::remove_cvref_t<ExecutionPolicy>>)
+void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system,
+          typename ParticleSystem<S, D, P, Features...>::real duration,
+          const forces::Laws<G...>& laws) {
+  using System = ParticleSystem<S, D, P, Features...>;
+  using R = typename System::real;
+  static_assert(System::template has<features::ForceAccumulator>,
+                "pointmass::step(policy, system, duration, laws): laws need each particle's mass; "
+                "add features::ForceAccumulator to the system's features");
+  static_assert(forces::detail::all_laws<R>(static_cast<const forces::Laws<G...>*>(nullptr)),
+                "pointmass::step(policy, system, duration, laws): every law must be a force of "
+                "one particle's own state, force(p, v, inverse_mass, t) returning Vector3<real>");
+  static_assert(std::is_same_v<typename System::position_value, R>,
+                "pointmass::step(policy, system, duration, laws): this system stores its "
+                "positions wider than its arithmetic; apply the forces with forces::apply(law, "
+                "forces::relative_to(system, origin), t) before the step");
+  unsigned beyond = 0;
+  detail::SystemAccess::finish_step(
+      system,
+      detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration, laws, &beyond));
+  if (beyond != 0) forces::report_beyond("step", beyond);
 }
 
 }  // namespace pointmass

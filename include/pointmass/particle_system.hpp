@@ -51,6 +51,7 @@
 #include "system/hand_off.hpp"
 #include "system/handles.hpp"
 #include "system/interpolation.hpp"
+#include "system/laws_step.hpp"
 #include "system/lifetime.hpp"
 #include "vector3.hpp"
 
@@ -68,8 +69,8 @@ namespace detail {
 // The facets, each over the one before it and the first over the state: one line of private
 // bases, in which every facet is empty (a system is as big as its state).
 template <class State>
-using SystemFacets = SystemDeprecated<SystemHandOff<SystemInterpolation<
-    SystemLifetime<SystemForceAccumulator<SystemHandles<SystemColumns<State>>>>>>>;
+using SystemFacets = SystemLawsStep<SystemDeprecated<SystemHandOff<SystemInterpolation<
+    SystemLifetime<SystemForceAccumulator<SystemHandles<SystemColumns<State>>>>>>>>;
 }  // namespace detail
 
 // clang-format off
@@ -338,7 +339,8 @@ class ParticleSystem : private detail::SystemFacets<detail::SystemStateBase<S, D
       Facets::previous_position, Facets::set_column, Facets::set_inverse_mass, Facets::set_lifetime,
       Facets::set_mass;
 
-  // --- the step ------------------------------------------------------------------------------
+  // --- the step (and step(duration, laws[, Substeps][, on_expire]): system/laws_step.hpp) ----
+  using Facets::step;
 
   /// Advances every particle by `duration` seconds (each particle's step is Particle's:
   /// detail/system_kernel.hpp), then expires those whose lifetime is over. A negative, NaN or

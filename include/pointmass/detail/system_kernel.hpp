@@ -23,6 +23,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <type_traits>
 
 #include "../config.hpp"
@@ -32,6 +33,7 @@
 #include "../real.hpp"
 #include "../vector3.hpp"
 #include "exponential.hpp"
+#include "movable_step.hpp"
 #include "validate.hpp"
 
 #if defined(__clang__) && !defined(__arm__)
@@ -47,6 +49,7 @@ POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 struct NoFactors {};
+struct NoLaws {};  // a step whose forces are the accumulator's alone
 
 // Adds a step of t to an age kept as age + error (Kahan's sum): the steps' exact sum.
 template <class R>
@@ -56,6 +59,13 @@ POINTMASS_HD constexpr void count_age(R& age, R& error, R t) noexcept {
   const R sum = age + step;
   error = step - (sum - age);  // exact while age >= step; 0 on the first step
   age = sum;  // once it overflows, age + error is NaN: lifetime_expired reads that as expired
+}
+
+// A particle of this age (age + error, count_age; NaN once it overflowed) and lifetime has
+// expired (an infinite lifetime never does). Branch free, so that the block scan vectorises.
+template <class R>
+POINTMASS_HD constexpr bool lifetime_expired(R age, R error, R lifetime) noexcept {
+  return !(age + error < lifetime) & (lifetime < real_infinity<R>);
 }
 
 // P is checked by ParticleSystem (detail::check_policy_pair), with one sentence.
@@ -76,10 +86,9 @@ class SystemKernel {
                                              damping_factors>
         factors{};
     Vector3<R> acceleration{};
-    /// With the damping_retention column (features.hpp): compute each particle's retention
-    /// for this duration into the column, before its step. True unless the system knows the column
-    /// holds d^t for this duration already (ParticleSystem::step_parameters says), so a
-    /// loop of one's own that builds its parameters itself is always right.
+    /// With the damping_retention column (features.hpp): compute each particle's d^t into it
+    /// before its step. True unless the system knows the column holds this duration's already
+    /// (step_parameters says), so a loop of one's own that builds its parameters is right.
     bool refresh = true;
   };
 
@@ -160,16 +169,21 @@ class SystemKernel {
     }
   }
 
- private:
+ protected:
   // step_particle once the retention column (if any) holds d^t for this duration.
   // AllMovable: the caller has found particle i movable (all_movable), so the step is taken
   // without selecting between the stepped and the unchanged values: the same bits, since for
   // a movable particle the select keeps the stepped ones.
-  template <bool AllMovable = false>
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void step_kept(
-      const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
+  // Laws: forces::Laws evaluated on the particle's state and added after its accumulated
+  // force; returns the laws whose force was beyond range (Laws::add). StorePrevious: false for
+  // the sub-steps after the first of a pass, which keep the position from before the pass.
+  template <bool AllMovable = false, bool StorePrevious = true, class Laws = NoLaws>
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr unsigned step_kept(
+      const Arrays& arrays, std::size_t i, const StepParameters& parameters,
+      const Laws& laws = {}) noexcept {
     const R t = parameters.duration;
-    if constexpr (Layout::has_interpolation) {  // the position before this step, for drawing
+    unsigned beyond = 0;
+    if constexpr (Layout::has_interpolation && StorePrevious) {  // the position before, drawn
       arrays.previous_position_x[i] = arrays.position_x[i];
       arrays.previous_position_y[i] = arrays.position_y[i];
       arrays.previous_position_z[i] = arrays.position_z[i];
@@ -199,30 +213,30 @@ class SystemKernel {
     if constexpr (!plain_positions) {  // stored wider or compensated (precision.hpp)
       bool movable = true;
       if constexpr (Layout::has_forces) {
-        const R inverse_mass = apply_forces(arrays, i, ax, ay, az);
+        const R inverse_mass = apply_forces(arrays, i, ax, ay, az, laws, t, beyond);
         movable = inverse_mass > R(0);
       }
-      integrate_stored_if(movable, arrays.position_x[i], arrays.position_error_x, i,
-                          arrays.velocity_x[i], kx, ax, t, h, factors);
-      integrate_stored_if(movable, arrays.position_y[i], arrays.position_error_y, i,
-                          arrays.velocity_y[i], ky, ay, t, h, factors);
-      integrate_stored_if(movable, arrays.position_z[i], arrays.position_error_z, i,
-                          arrays.velocity_z[i], kz, az, t, h, factors);
+      integrate_stored_if<D, P, Layout>(movable, arrays.position_x[i], arrays.position_error_x, i,
+                                        arrays.velocity_x[i], kx, ax, t, h, factors);
+      integrate_stored_if<D, P, Layout>(movable, arrays.position_y[i], arrays.position_error_y, i,
+                                        arrays.velocity_y[i], ky, ay, t, h, factors);
+      integrate_stored_if<D, P, Layout>(movable, arrays.position_z[i], arrays.position_error_z, i,
+                                        arrays.velocity_z[i], kz, az, t, h, factors);
       if constexpr (Layout::has_kicks) kept_half = select_if(movable, half, kept_half);
     } else if constexpr (Layout::has_forces && AllMovable) {
-      apply_forces(arrays, i, ax, ay, az);
+      apply_forces(arrays, i, ax, ay, az, laws, t, beyond);
       integrate_component<D, P>(arrays.position_x[i], arrays.velocity_x[i], kx, ax, t, h, factors);
       integrate_component<D, P>(arrays.position_y[i], arrays.velocity_y[i], ky, ay, t, h, factors);
       integrate_component<D, P>(arrays.position_z[i], arrays.velocity_z[i], kz, az, t, h, factors);
       if constexpr (Layout::has_kicks) kept_half = half;
     } else if constexpr (Layout::has_forces) {
-      const R inverse_mass = apply_forces(arrays, i, ax, ay, az);
-      integrate_if_movable(inverse_mass, arrays.position_x[i], arrays.velocity_x[i], kx, ax, t, h,
-                           factors);
-      integrate_if_movable(inverse_mass, arrays.position_y[i], arrays.velocity_y[i], ky, ay, t, h,
-                           factors);
-      integrate_if_movable(inverse_mass, arrays.position_z[i], arrays.velocity_z[i], kz, az, t, h,
-                           factors);
+      const R inverse_mass = apply_forces(arrays, i, ax, ay, az, laws, t, beyond);
+      integrate_if_movable<D, P, Layout>(inverse_mass, arrays.position_x[i], arrays.velocity_x[i],
+                                         kx, ax, t, h, factors);
+      integrate_if_movable<D, P, Layout>(inverse_mass, arrays.position_y[i], arrays.velocity_y[i],
+                                         ky, ay, t, h, factors);
+      integrate_if_movable<D, P, Layout>(inverse_mass, arrays.position_z[i], arrays.velocity_z[i],
+                                         kz, az, t, h, factors);
       if constexpr (Layout::has_kicks)
         kept_half = select_if_less(R(0), inverse_mass, half, kept_half);
     } else {
@@ -232,6 +246,7 @@ class SystemKernel {
       if constexpr (Layout::has_kicks) kept_half = half;
     }
     if constexpr (Layout::has_lifetime) count_age(arrays.age[i], arrays.age_error[i], t);
+    return beyond;
   }
 
  public:
@@ -243,24 +258,29 @@ class SystemKernel {
   // users' code must not fail on it.
 #pragma clang diagnostic ignored "-Wpass-failed"
 #endif
-  /// Steps particles [begin, end) of `arrays`: the vectorised loop over step_particle.
+  /// Steps particles [begin, end) of `arrays`: the vectorised loop over step_particle, with
+  /// `laws` (forces::Laws) fused into it; returns the laws whose force was beyond range.
   /// begin <= end <= arrays.size is a precondition, checked when POINTMASS_CHECKS is on.
-  static void step_range(const Arrays& arrays_in, std::size_t begin, std::size_t end,
-                         const StepParameters& parameters_in) noexcept(!POINTMASS_HOST_CHECKS) {
+  template <class Laws = NoLaws>
+  static unsigned step_range(const Arrays& arrays_in, std::size_t begin, std::size_t end,
+                             const StepParameters& parameters_in,
+                             const Laws& laws_in = {}) noexcept(!POINTMASS_HOST_CHECKS) {
 #if POINTMASS_HOST_CHECKS
-    if (!check_range("step_range", begin, end, arrays_in.size)) return;
+    if (!check_range("step_range", begin, end, arrays_in.size)) return 0;
 #endif
     // Local copies: the loop's stores cannot alias them, so the compiler keeps the shared
     // values in registers instead of reloading them for every vector of particles.
     const Arrays arrays = arrays_in;
     const StepParameters parameters = parameters_in;
+    const Laws laws = laws_in;
+    unsigned beyond = 0;
     if constexpr (skips_movable_select) {
       // Segments of movable_chunk particles, each tested for immovable ones (step_segment).
       for (; end - begin > movable_chunk; begin += movable_chunk) {
-        step_segment(arrays, begin, movable_chunk, parameters);
+        beyond |= step_segment(arrays, begin, movable_chunk, parameters, laws);
       }
     }
-    step_segment(arrays, begin, end - begin, parameters);
+    return beyond | step_segment(arrays, begin, end - begin, parameters, laws);
   }
 
   /// Steps particles [begin, end) as step_range does, with the same results, but walks them
@@ -268,54 +288,65 @@ class SystemKernel {
   /// chunks from the last to the first, each chunk forwards through the same vectorised
   /// loop (a single copy of it in this function: clang 14 lost the loop's no-alias mark on
   /// a second inlined copy and left that copy scalar). Same precondition as step_range.
-  static void step_range_backward(
-      const Arrays& arrays_in, std::size_t begin, std::size_t end,
-      const StepParameters& parameters_in) noexcept(!POINTMASS_HOST_CHECKS) {
+  template <class Laws = NoLaws>
+  static unsigned step_range_backward(const Arrays& arrays_in, std::size_t begin, std::size_t end,
+                                      const StepParameters& parameters_in,
+                                      const Laws& laws_in = {}) noexcept(!POINTMASS_HOST_CHECKS) {
 #if POINTMASS_HOST_CHECKS
-    if (!check_range("step_range_backward", begin, end, arrays_in.size)) return;
+    if (!check_range("step_range_backward", begin, end, arrays_in.size)) return 0;
 #endif
     const Arrays arrays = arrays_in;  // local copies, as in step_range
     const StepParameters parameters = parameters_in;
+    const Laws laws = laws_in;
+    unsigned beyond = 0;
     std::size_t first = end - (end - begin) % backward_chunk;
     std::size_t count = end - first;
     for (;;) {
-      step_segment(arrays, first, count, parameters);
-      if (first == begin) break;
+      beyond |= step_segment(arrays, first, count, parameters, laws);
+      if (first == begin) return beyond;
       first -= backward_chunk;
       count = backward_chunk;
     }
   }
 
- private:
+ protected:
   // Particles [first, first + count): the loop marked for vectorisation (when the
   // configuration can vectorise) over a trip count that is a multiple of vector_block, which
   // lets g++'s -O2 cost model vectorise it without a remainder loop; then the remainder.
-  POINTMASS_DETAIL_ALWAYS_INLINE static void step_segment(
-      const Arrays& arrays, std::size_t first, std::size_t count,
-      const StepParameters& parameters) noexcept {
+  template <bool StorePrevious = true, class Laws = NoLaws>
+  POINTMASS_DETAIL_ALWAYS_INLINE static unsigned step_segment(const Arrays& arrays,
+                                                              std::size_t first, std::size_t count,
+                                                              const StepParameters& parameters,
+                                                              const Laws& laws) noexcept {
     const std::size_t blocked = count & ~(vector_block - 1);
     if constexpr (Layout::per_particle_retention) {
       if (parameters.refresh) refresh_segment(arrays, first, count, blocked, parameters.duration);
     }
+    unsigned beyond = 0;
     if constexpr (vectorisable && skips_movable_select) {
       // When every particle of the segment (at most movable_chunk) is movable, its loop
       // takes no select; else (an immovable particle, a NaN inverse mass) the loop with it.
       if (all_movable(arrays.inverse_mass + first, blocked)) {
-        step_loop<true>(arrays, first, blocked, parameters);
+        beyond = step_loop<true, StorePrevious>(arrays, first, blocked, parameters, laws);
       } else {
-        step_loop<false>(arrays, first, blocked, parameters);
+        beyond = step_loop<false, StorePrevious>(arrays, first, blocked, parameters, laws);
       }
     } else if constexpr (vectorisable) {
-      step_loop<false>(arrays, first, blocked, parameters);
+      beyond = step_loop<false, StorePrevious>(arrays, first, blocked, parameters, laws);
     }
     if constexpr (vectorisable) {
       // The remainder (under vector_block particles) marked too: with -march=native it runs
       // as one or two shorter vectors instead of up to 15 scalar steps.
       POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
-      for (std::size_t k = blocked; k < count; ++k) step_kept(arrays, first + k, parameters);
+      for (std::size_t k = blocked; k < count; ++k) {
+        beyond |= step_kept<false, StorePrevious>(arrays, first + k, parameters, laws);
+      }
     } else {  // a power function per particle: no vector loop to ask for
-      for (std::size_t k = 0; k < count; ++k) step_kept(arrays, first + k, parameters);
+      for (std::size_t k = 0; k < count; ++k) {
+        beyond |= step_kept<false, StorePrevious>(arrays, first + k, parameters, laws);
+      }
     }
+    return beyond;
   }
   // A new step length t: each particle's d^t first, in a loop of its own (vectorised for
   // PerSecond; AccelerateThenDamp's powf is a call), so that the step's loop stays one.
@@ -333,13 +364,17 @@ class SystemKernel {
   // The step loop over particles [first, first + count), count a multiple of vector_block
   // (said again by the mask, so that the compiler needs no remainder loop): one source line
   // for both instantiations, so that the vectorisation probes see each of them.
-  template <bool AllMovable>
-  POINTMASS_DETAIL_ALWAYS_INLINE static void step_loop(const Arrays& arrays, std::size_t first,
-                                                       std::size_t count,
-                                                       const StepParameters& parameters) noexcept {
+  template <bool AllMovable, bool StorePrevious, class Laws>
+  POINTMASS_DETAIL_ALWAYS_INLINE static unsigned step_loop(const Arrays& arrays, std::size_t first,
+                                                           std::size_t count,
+                                                           const StepParameters& parameters,
+                                                           const Laws& laws) noexcept {
     const std::size_t blocked = count & ~(vector_block - 1);
+    unsigned beyond = 0;
     POINTMASS_DETAIL_INDEPENDENT_ITERATIONS  // the step loop (tests/system probes this line)
-    for (std::size_t k = 0; k < blocked; ++k) step_kept<AllMovable>(arrays, first + k, parameters);
+    for (std::size_t k = 0; k < blocked; ++k)
+      beyond |= step_kept<AllMovable, StorePrevious>(arrays, first + k, parameters, laws);
+    return beyond;
   }
 
   // True when each of the `count` inverse masses from `inverse_mass` makes its particle
@@ -370,26 +405,35 @@ class SystemKernel {
     }
   }
 
-  // Adds the particle's accumulated force times its inverse mass to (ax, ay, az), clears the
+  // Adds the particle's accumulated force, and the laws' (after it, in their order, as
+  // forces::apply then step add them), times its inverse mass to (ax, ay, az), clears the
   // accumulator, and returns the inverse mass.
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr R apply_forces(const Arrays& arrays,
-                                                                              std::size_t i, R& ax,
-                                                                              R& ay,
-                                                                              R& az) noexcept {
+  template <class Laws>
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr R apply_forces(
+      const Arrays& arrays, std::size_t i, R& ax, R& ay, R& az, const Laws& laws, R t,
+      unsigned& beyond) noexcept {
     const R inverse_mass = arrays.inverse_mass[i];
-    ax = ax + arrays.force_x[i] * inverse_mass;
-    ay = ay + arrays.force_y[i] * inverse_mass;
-    az = az + arrays.force_z[i] * inverse_mass;
+    R fx = arrays.force_x[i];
+    R fy = arrays.force_y[i];
+    R fz = arrays.force_z[i];
+    if constexpr (!std::is_same_v<Laws, NoLaws>) {
+      const Vector3<R> p{arrays.position_x[i], arrays.position_y[i], arrays.position_z[i]};
+      const Vector3<R> v{arrays.velocity_x[i], arrays.velocity_y[i], arrays.velocity_z[i]};
+      beyond = laws.add(p, v, inverse_mass, t, fx, fy, fz);
+    } else {
+      static_cast<void>(laws);
+      static_cast<void>(t);
+      static_cast<void>(beyond);
+    }
+    ax = ax + fx * inverse_mass;
+    ay = ay + fy * inverse_mass;
+    az = az + fz * inverse_mass;
     arrays.force_x[i] = R(0);
     arrays.force_y[i] = R(0);
     arrays.force_z[i] = R(0);
     return inverse_mass;
   }
 
-  // Both outcomes computed, one kept (inverse_mass > 0: movable): a select the vectoriser can
-  // do, where a branch is not. The mask comes from sign bits (detail::select_if_less): g++ -O2
-  // has no SSE2 pattern for a 64-bit mask from a double comparison, so a `bool` made into a
-  // mask left double systems with forces scalar there.
   // Particle i's element of a kick column, or `none` where the policy keeps no kick.
   POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr R& kick_of(R* column, std::size_t i,
                                                                           R& none) noexcept {
@@ -397,50 +441,6 @@ class SystemKernel {
     static_cast<void>(column);
     static_cast<void>(i);
     return none;
-  }
-
-  template <class F>
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void integrate_if_movable(
-      R inverse_mass, R& p, R& v, R& kick, R a, R t, R last_half, const F& factors) noexcept {
-    R p1 = p;
-    R v1 = v;
-    R kick1 = kick;
-    integrate_component<D, P>(p1, v1, kick1, a, t, last_half, factors);
-    p = select_if_less(R(0), inverse_mass, p1, p);
-    v = select_if_less(R(0), inverse_mass, v1, v);
-    if constexpr (Layout::has_kicks) kick = select_if_less(R(0), inverse_mass, kick1, kick);
-  }
-
-  // integrate_if_movable for a position stored wider or compensated; `error` is the error
-  // column (nullptr unless compensated).
-  template <class F>
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void integrate_stored_if(
-      bool movable, position_element& p, R* error, std::size_t i, R& v, R& kick, R a, R t,
-      R last_half, const F& factors) noexcept {
-    if constexpr (!Layout::has_forces) {
-      // Every particle is movable: stepped in place, so that integrate stores the velocity
-      // before it computes the displacement from v0, which then cannot be loaded from memory
-      // a second time (integrate in particle.hpp says why that matters). Same bits.
-      static_cast<void>(movable);
-      R no_error = R(0);
-      R& lo = [&]() -> R& {
-        if constexpr (Layout::compensated_positions) return error[i];
-        else return no_error;
-      }();
-      integrate_stored<D, P, position_storage>(p, lo, v, kick, a, t, last_half, factors);
-      return;
-    }
-    position_element p1 = p;
-    R v1 = v;
-    R kick1 = kick;
-    R lo = R(0);
-    if constexpr (Layout::compensated_positions) lo = error[i];
-    R lo1 = lo;
-    integrate_stored<D, P, position_storage>(p1, lo1, v1, kick1, a, t, last_half, factors);
-    p = select_if(movable, p1, p);
-    v = select_if(movable, v1, v);
-    if constexpr (Layout::has_kicks) kick = select_if(movable, kick1, kick);
-    if constexpr (Layout::compensated_positions) error[i] = select_if(movable, lo1, lo);
   }
 };
 

@@ -30,13 +30,6 @@ struct NoExpiryCallback {
   void operator()(std::size_t) const noexcept {}
 };
 
-// A particle of this age (age + error, detail::count_age; NaN once it overflowed) and lifetime
-// has expired (an infinite lifetime never does). Branch free, so that the block scan vectorises.
-template <class R>
-POINTMASS_HD constexpr bool lifetime_expired(R age, R error, R lifetime) noexcept {
-  return !(age + error < lifetime) & (lifetime < real_infinity<R>);
-}
-
 template <class S, DampingPolicy D, class P, class... Features>
 class SystemPasses : public SystemState<S, D, P, Features...> {
   using Base = SystemState<S, D, P, Features...>;
@@ -189,18 +182,28 @@ class SystemPasses : public SystemState<S, D, P, Features...> {
   void record_retention(R duration) noexcept {
     if constexpr (Layout::per_particle_retention) retention_duration_ = duration;
   }
-  // Steps every particle, walking in the direction due; false when there was nothing to do.
+  // Steps every particle, walking in the direction due, with `laws` (forces::Laws) fused in,
+  // in `substeps` steps of duration / substeps (one pass: forwards); false when there was
+  // nothing to do. `beyond`: the laws whose force was beyond range, for the caller to report.
   // A branch picks the walk: through a function pointer it was not inlined, and slower.
-  bool walk(R duration) {
+  template <class Laws = NoLaws>
+  bool walk(R duration, const Laws& laws = {}, std::size_t substeps = 1,
+            unsigned* beyond = nullptr) {
     if (!begin_step(duration, "step")) return false;
-    const StepParameters parameters = keep_step_parameters(duration);
-    if (backward_) {
-      Kernel::step_range_backward(arrays(), 0, size(), parameters);
+    const R length = substeps == 1 ? duration : duration / static_cast<R>(substeps);
+    if (!(length > R(0))) return false;  // a sub-step below the least R: nothing moves
+    const StepParameters parameters = keep_step_parameters(length);
+    unsigned out = 0;
+    if (substeps != 1) {
+      out = Kernel::step_range_substeps(arrays(), 0, size(), parameters, laws, substeps);
+    } else if (backward_) {
+      out = Kernel::step_range_backward(arrays(), 0, size(), parameters, laws);
     } else {
-      Kernel::step_range(arrays(), 0, size(), parameters);
+      out = Kernel::step_range(arrays(), 0, size(), parameters, laws);
     }
-    backward_ = !backward_ && Kernel::alternates(size());
-    record_retention(duration);
+    if (substeps == 1) backward_ = !backward_ && Kernel::alternates(size());
+    record_retention(length);
+    if (beyond != nullptr) *beyond = out;
     return true;
   }
 

@@ -32,7 +32,7 @@
 #include "../vector3.hpp"
 #include "handle_table.hpp"
 #include "soa_block.hpp"
-#include "system_kernel.hpp"
+#include "system_substeps.hpp"
 #include "validate.hpp"
 
 POINTMASS_DETAIL_UNFUSED_BEGIN
@@ -46,7 +46,7 @@ class SystemState {
   using R = real_of_t<S>;
   using Layout = std::conditional_t<kicks_v<P>, SystemLayout<S, D, Features..., Kicks>,
                                     SystemLayout<S, D, Features...>>;
-  using Kernel = SystemKernel<R, D, P, Layout>;
+  using Kernel = SubstepKernel<R, D, P, Layout>;
   using Storage = typename Layout::position_storage;
   using Block = SoaBlock<Layout>;
   using Arrays = typename Layout::Arrays;

@@ -151,6 +151,15 @@ constexpr bool check_force(const char* function, const Vector3<R>& force) {
   return false;
 }
 
+/// Law `index` of a fused step (forces::Laws) gave a force beyond the range of the number
+/// type on at least one particle; it was not added to those particles.
+inline void report_law_range(const char* function, unsigned index) {
+  report_scalar(function, "law",
+                "giving a finite force: this law's force on at least one particle is beyond "
+                "the range of the number type (docs/forces.md, Ranges) and was not added to it",
+                index);
+}
+
 /// A state a closed-form step computed from finite input: finite unless beyond the range of
 /// the number type (docs/forces.md, Ranges), which is reported instead of stored.
 template <Real R>
