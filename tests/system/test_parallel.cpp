@@ -3,6 +3,7 @@
 // bit for bit, over many chunks, and under FlushDenormals as well; like it, it keeps the
 // damping factors for its step length.
 #include <pointmass/denormals.hpp>
+#include <pointmass/forces.hpp>
 #include <pointmass/parallel.hpp>
 
 #include <doctest/doctest.h>
@@ -270,4 +271,35 @@ TEST_CASE("a parallel step under FlushDenormals flushes on every thread, as the 
   CHECK(subnormal == 0);
   CHECK(different == 0);
   CHECK(serial.velocity(0).x == 0.0f);
+}
+
+TEST_CASE_TEMPLATE("a parallel step with force laws equals the serial step with them", R, float,
+                   double) {
+  using System = ParticleSystem<R, damping::PerSecond, position::Euler, features::ForceAccumulator,
+                                features::Interpolation>;
+  constexpr std::size_t count = 50'003;  // 4 chunks, the last partial
+  std::mt19937 engine(12);
+  System serial(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    serial.spawn(random_vector(engine, R(6)), random_vector(engine, R(3)));
+    serial.set_mass(i, R(1) + R(i % 5));
+  }
+  System parallel = serial;
+  const auto laws =
+      forces::laws(forces::Drag<R>(R(0.2), R(0.05)),
+                   forces::AnchoredSpring<R>(Vector3<R>{R(0), R(4), R(0)}, R(6), R(2)));
+  for (int step = 0; step < 6; ++step) {
+    serial.add_force(7, Vector3<R>{R(3), R(0), R(0)});  // composed with the laws
+    parallel.add_force(7, Vector3<R>{R(3), R(0), R(0)});
+    serial.step(R(1) / R(60), laws);
+    pointmass::step(std::execution::par_unseq, parallel, R(1) / R(60), laws);
+  }
+  bool same = true;
+  for (std::size_t i = 0; i < count; ++i) {
+    same = same && same_bits(serial.position(i), parallel.position(i)) &&
+           same_bits(serial.velocity(i), parallel.velocity(i)) &&
+           same_bits(serial.previous_position(i), parallel.previous_position(i));
+  }
+  CHECK(same);
+  CHECK(!same_bits(serial.position(7), serial.previous_position(7)));
 }
