@@ -246,13 +246,13 @@ void sizes(benchmark::internal::Benchmark* b) {
   if (std::getenv("POINTMASS_BENCHMARK_SMOKE") == nullptr) b->Arg(100000)->Arg(1000000);
 }
 
-#define POINTMASS_FORCES_BENCHMARKS(R)        \
-  BENCHMARK(BM_Cyclone<R>)->Apply(sizes);     \
-  BENCHMARK(BM_Registry<R>)->Apply(sizes);    \
+#define POINTMASS_FORCES_BENCHMARKS(R)         \
+  BENCHMARK(BM_Cyclone<R>)->Apply(sizes);      \
+  BENCHMARK(BM_Registry<R>)->Apply(sizes);     \
   BENCHMARK(BM_RegistryRoof<R>)->Apply(sizes); \
-  BENCHMARK(BM_StepOnly<R>)->Apply(sizes);    \
-  BENCHMARK(BM_UpdateForce<R>)->Apply(sizes); \
-  BENCHMARK(BM_SystemApply<R>)->Apply(sizes); \
+  BENCHMARK(BM_StepOnly<R>)->Apply(sizes);     \
+  BENCHMARK(BM_UpdateForce<R>)->Apply(sizes);  \
+  BENCHMARK(BM_SystemApply<R>)->Apply(sizes);  \
   BENCHMARK(BM_HandFused<R>)->Apply(sizes)
 
 POINTMASS_FORCES_BENCHMARKS(float);
