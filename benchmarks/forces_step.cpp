@@ -135,6 +135,43 @@ void BM_Registry(benchmark::State& state) {
   });
 }
 
+// The registry's memory roof: the same 2N registrations and step, but generators that only
+// add a zero force (the particle's accumulator read and written, no arithmetic of the laws):
+// the walk's own cost and the traffic of its passes over the particles, in registration order.
+template <class R>
+struct Touch {
+  void update_force(Body<R>& particle, R) const { particle.add_force({}); }
+};
+template <class R>
+struct TouchToo : Touch<R> {};
+
+template <class R>
+void BM_RegistryRoof(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  auto particles = bodies<R>(n);
+  Touch<R> first;
+  TouchToo<R> second;
+  forces::ForceRegistry<Body<R>, Touch<R>, TouchToo<R>> registry;
+  for (auto& particle : particles) {
+    registry.add(particle, first);
+    registry.add(particle, second);
+  }
+  time_frames(state, [&] {
+    registry.update_forces(duration<R>());
+    for (auto& particle : particles) particle.integrate(duration<R>());
+  });
+}
+
+// The step alone (no force): what every row pays for integrate.
+template <class R>
+void BM_StepOnly(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  auto particles = bodies<R>(n);
+  time_frames(state, [&] {
+    for (auto& particle : particles) particle.integrate(duration<R>());
+  });
+}
+
 template <class R>
 void BM_UpdateForce(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
@@ -209,11 +246,13 @@ void sizes(benchmark::internal::Benchmark* b) {
   if (std::getenv("POINTMASS_BENCHMARK_SMOKE") == nullptr) b->Arg(100000)->Arg(1000000);
 }
 
-#define POINTMASS_FORCES_BENCHMARKS(R)        \
-  BENCHMARK(BM_Cyclone<R>)->Apply(sizes);     \
-  BENCHMARK(BM_Registry<R>)->Apply(sizes);    \
-  BENCHMARK(BM_UpdateForce<R>)->Apply(sizes); \
-  BENCHMARK(BM_SystemApply<R>)->Apply(sizes); \
+#define POINTMASS_FORCES_BENCHMARKS(R)         \
+  BENCHMARK(BM_Cyclone<R>)->Apply(sizes);      \
+  BENCHMARK(BM_Registry<R>)->Apply(sizes);     \
+  BENCHMARK(BM_RegistryRoof<R>)->Apply(sizes); \
+  BENCHMARK(BM_StepOnly<R>)->Apply(sizes);     \
+  BENCHMARK(BM_UpdateForce<R>)->Apply(sizes);  \
+  BENCHMARK(BM_SystemApply<R>)->Apply(sizes);  \
   BENCHMARK(BM_HandFused<R>)->Apply(sizes)
 
 POINTMASS_FORCES_BENCHMARKS(float);

@@ -4,6 +4,9 @@
 // forces.
 #include <doctest/doctest.h>
 
+#include <limits>
+#include <vector>
+
 #include <pointmass/forces.hpp>
 #include <pointmass/particle.hpp>
 
@@ -119,4 +122,104 @@ TEST_CASE_TEMPLATE("registry over a whole simulation step: immovable particles s
     wall.integrate(R(0.1));
   }
   CHECK(wall.position() == Vector3<R>{R(0), R(1), R(0)});
+}
+
+namespace {
+// A contract handler that, reporting particle 2's force, changes what the pass has not
+// reached yet in the same block of registrations: particle 5's velocity, and particle 6's
+// drag registration (removed).
+struct Meddling {
+  void* registry;
+  void* particles;
+  const void* drag;
+  int reports;
+};
+Meddling meddling{};
+template <class Registry, class R>
+void meddle(const pointmass::ContractViolation&) {
+  ++meddling.reports;
+  auto& particles = *static_cast<std::vector<Particle<R>>*>(meddling.particles);
+  particles[5].set_velocity({R(3), R(0), R(0)});
+  static_cast<Registry*>(meddling.registry)
+      ->remove(particles[6], *static_cast<const forces::Drag<R>*>(meddling.drag));
+}
+}  // namespace
+
+TEST_CASE_TEMPLATE("registry: known field generators add update_force's bits, in turn", R, float,
+                   double) {
+  using Registry = forces::ForceRegistry<Particle<R>, forces::Drag<R>, forces::AnchoredSpring<R>>;
+  forces::Drag<R> drag(R(0.1), R(0.01));  // non-const: the known types' own vectors
+  forces::AnchoredSpring<R> spring({R(0), R(0), R(0)}, R(4), R(2));
+  std::vector<Particle<R>> particles(21), direct(21);  // two blocks and a part
+  for (std::size_t k = 0; k < particles.size(); ++k) {
+    const R f = static_cast<R>(k) / R(7);
+    particles[k].set_position({R(3) * f - R(1.5), R(2) - f, f});
+    particles[k].set_velocity({R(1) - f, R(2) * f, f - R(0.5)});
+    particles[k].set_mass(R(1) + f);
+  }
+  direct = particles;
+  Registry registry;
+  for (auto& p : particles) registry.add(p, drag);
+  for (auto& p : particles) registry.add(p, spring);
+  registry.update_forces(R(0.01));
+  for (auto& p : direct) forces::update_force(drag, p, R(0.01));
+  for (auto& p : direct) forces::update_force(spring, p, R(0.01));
+  for (std::size_t k = 0; k < particles.size(); ++k) {
+    CHECK(particles[k].force_accumulator() == direct[k].force_accumulator());
+  }
+
+  // Particle 2's drag is beyond the range: reported, and the handler changes particle 5 and
+  // removes particle 6's drag; the pass sees both, as one registration after another would.
+  for (auto& p : particles) p.clear_accumulator();
+  const R huge = std::numeric_limits<R>::max() / R(2);
+  particles[2].set_velocity({huge, huge, R(0)});
+  meddling = {&registry, &particles, &drag, 0};
+  const auto previous = pointmass::set_contract_handler(&meddle<Registry, R>);
+  registry.update_forces(R(0.01));
+  pointmass::set_contract_handler(previous);
+  CHECK(meddling.reports == 1);
+  CHECK(registry.size() == 41);
+  Particle<R> fifth = particles[5];
+  fifth.clear_accumulator();
+  forces::update_force(drag, fifth, R(0.01));
+  forces::update_force(spring, fifth, R(0.01));
+  CHECK(particles[5].force_accumulator() == fifth.force_accumulator());
+  Particle<R> sixth = particles[6];
+  sixth.clear_accumulator();
+  forces::update_force(spring, sixth, R(0.01));  // its drag was removed before its turn
+  CHECK(particles[6].force_accumulator() == sixth.force_accumulator());
+}
+
+namespace {
+// A known generator type with its own update_force, walked before the drags: it removes
+// particle 3's drag registration before the drags' turn.
+template <class R>
+struct DragRemover {
+  void (*remove)(void*);  // the registry's type names this one: reached through a callback
+  void* context;
+  void update_force(Particle<R>&, R) { remove(context); }
+};
+}  // namespace
+
+TEST_CASE_TEMPLATE("registry: a known registration removed before its turn adds nothing", R, float,
+                   double) {
+  using Registry = forces::ForceRegistry<Particle<R>, DragRemover<R>, forces::Drag<R>>;
+  struct Context {
+    Registry registry;
+    forces::Drag<R> drag{R(0.1), R(0.01)};
+    std::vector<Particle<R>> particles = std::vector<Particle<R>>(11);
+  } c;
+  auto& [registry, drag, particles] = c;
+  for (auto& p : particles) p.set_velocity({R(1), R(2), R(0)});
+  DragRemover<R> remover{[](void* context) {
+                           auto& x = *static_cast<Context*>(context);
+                           x.registry.remove(x.particles[3], x.drag);
+                         },
+                         &c};
+  registry.add(particles[0], remover);
+  for (auto& p : particles) registry.add(p, drag);
+  registry.update_forces(R(0.01));
+  CHECK(particles[3].force_accumulator() == Vector3<R>{});
+  CHECK(particles[4].force_accumulator() == particles[2].force_accumulator());
+  CHECK(registry.size() == 11);
 }
