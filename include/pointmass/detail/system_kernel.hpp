@@ -33,6 +33,7 @@
 #include "../real.hpp"
 #include "../vector3.hpp"
 #include "exponential.hpp"
+#include "law_pass.hpp"
 #include "movable_step.hpp"
 #include "validate.hpp"
 
@@ -174,15 +175,12 @@ class SystemKernel {
   // AllMovable: the caller has found particle i movable (all_movable), so the step is taken
   // without selecting between the stepped and the unchanged values: the same bits, since for
   // a movable particle the select keeps the stepped ones.
-  // Laws: forces::Laws evaluated on the particle's state and added after its accumulated
-  // force; returns the laws whose force was beyond range (Laws::add). StorePrevious: false for
-  // the sub-steps after the first of a pass, which keep the position from before the pass.
-  template <bool AllMovable = false, bool StorePrevious = true, class Laws = NoLaws>
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr unsigned step_kept(
-      const Arrays& arrays, std::size_t i, const StepParameters& parameters,
-      const Laws& laws = {}) noexcept {
+  // StorePrevious: false for the sub-steps after the first of a pass, which keep the
+  // position from before the pass.
+  template <bool AllMovable = false, bool StorePrevious = true>
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr void step_kept(
+      const Arrays& arrays, std::size_t i, const StepParameters& parameters) noexcept {
     const R t = parameters.duration;
-    unsigned beyond = 0;
     if constexpr (Layout::has_interpolation && StorePrevious) {  // the position before, drawn
       arrays.previous_position_x[i] = arrays.position_x[i];
       arrays.previous_position_y[i] = arrays.position_y[i];
@@ -213,7 +211,7 @@ class SystemKernel {
     if constexpr (!plain_positions) {  // stored wider or compensated (precision.hpp)
       bool movable = true;
       if constexpr (Layout::has_forces) {
-        const R inverse_mass = apply_forces(arrays, i, ax, ay, az, laws, t, beyond);
+        const R inverse_mass = apply_forces(arrays, i, ax, ay, az);
         movable = inverse_mass > R(0);
       }
       integrate_stored_if<D, P, Layout>(movable, arrays.position_x[i], arrays.position_error_x, i,
@@ -224,13 +222,13 @@ class SystemKernel {
                                         arrays.velocity_z[i], kz, az, t, h, factors);
       if constexpr (Layout::has_kicks) kept_half = select_if(movable, half, kept_half);
     } else if constexpr (Layout::has_forces && AllMovable) {
-      apply_forces(arrays, i, ax, ay, az, laws, t, beyond);
+      apply_forces(arrays, i, ax, ay, az);
       integrate_component<D, P>(arrays.position_x[i], arrays.velocity_x[i], kx, ax, t, h, factors);
       integrate_component<D, P>(arrays.position_y[i], arrays.velocity_y[i], ky, ay, t, h, factors);
       integrate_component<D, P>(arrays.position_z[i], arrays.velocity_z[i], kz, az, t, h, factors);
       if constexpr (Layout::has_kicks) kept_half = half;
     } else if constexpr (Layout::has_forces) {
-      const R inverse_mass = apply_forces(arrays, i, ax, ay, az, laws, t, beyond);
+      const R inverse_mass = apply_forces(arrays, i, ax, ay, az);
       integrate_if_movable<D, P, Layout>(inverse_mass, arrays.position_x[i], arrays.velocity_x[i],
                                          kx, ax, t, h, factors);
       integrate_if_movable<D, P, Layout>(inverse_mass, arrays.position_y[i], arrays.velocity_y[i],
@@ -246,7 +244,6 @@ class SystemKernel {
       if constexpr (Layout::has_kicks) kept_half = half;
     }
     if constexpr (Layout::has_lifetime) count_age(arrays.age[i], arrays.age_error[i], t);
-    return beyond;
   }
 
  public:
@@ -259,7 +256,8 @@ class SystemKernel {
 #pragma clang diagnostic ignored "-Wpass-failed"
 #endif
   /// Steps particles [begin, end) of `arrays`: the vectorised loop over step_particle, with
-  /// `laws` (forces::Laws) fused into it; returns the laws whose force was beyond range.
+  /// `laws` (forces::Laws) added to each chunk of law_chunk particles just before its step
+  /// (detail/law_pass.hpp); returns the laws whose force was beyond range (bit I for law I).
   /// begin <= end <= arrays.size is a precondition, checked when POINTMASS_CHECKS is on.
   template <class Laws = NoLaws>
   static unsigned step_range(const Arrays& arrays_in, std::size_t begin, std::size_t end,
@@ -273,14 +271,20 @@ class SystemKernel {
     const Arrays arrays = arrays_in;
     const StepParameters parameters = parameters_in;
     const Laws laws = laws_in;
+    const auto fused = fused_of(laws);
     unsigned beyond = 0;
-    if constexpr (skips_movable_select) {
-      // Segments of movable_chunk particles, each tested for immovable ones (step_segment).
-      for (; end - begin > movable_chunk; begin += movable_chunk) {
-        beyond |= step_segment(arrays, begin, movable_chunk, parameters, laws);
+    // Segments of movable_chunk particles, each tested for immovable ones (step_segment), or
+    // with laws of law_chunk, each given its forces first.
+    constexpr std::size_t segment = std::is_same_v<Laws, NoLaws> ? movable_chunk : law_chunk;
+    if constexpr (skips_movable_select || !std::is_same_v<Laws, NoLaws>) {
+      for (; end - begin > segment; begin += segment) {
+        beyond |= forces_of(arrays, begin, segment, parameters.duration, fused, laws);
+        step_segment(arrays, begin, segment, parameters);
       }
     }
-    return beyond | step_segment(arrays, begin, end - begin, parameters, laws);
+    beyond |= forces_of(arrays, begin, end - begin, parameters.duration, fused, laws);
+    step_segment(arrays, begin, end - begin, parameters);
+    return beyond;
   }
 
   /// Steps particles [begin, end) as step_range does, with the same results, but walks them
@@ -298,11 +302,14 @@ class SystemKernel {
     const Arrays arrays = arrays_in;  // local copies, as in step_range
     const StepParameters parameters = parameters_in;
     const Laws laws = laws_in;
+    const auto fused = fused_of(laws);
+    static_assert(backward_chunk <= law_chunk);
     unsigned beyond = 0;
     std::size_t first = end - (end - begin) % backward_chunk;
     std::size_t count = end - first;
     for (;;) {
-      beyond |= step_segment(arrays, first, count, parameters, laws);
+      beyond |= forces_of(arrays, first, count, parameters.duration, fused, laws);
+      step_segment(arrays, first, count, parameters);
       if (first == begin) return beyond;
       first -= backward_chunk;
       count = backward_chunk;
@@ -310,43 +317,59 @@ class SystemKernel {
   }
 
  protected:
+  // The laws' fused forms (forces/fused.hpp), made once a walk; none without laws.
+  static constexpr auto fused_of(const NoLaws&) noexcept { return NoLaws{}; }
+  template <class Laws>
+  static constexpr auto fused_of(const Laws& laws) noexcept {
+    return laws.fused();
+  }
+  // The laws' forces added to particles [first, first + count) (law_pass); 0 without laws.
+  template <class Fused, class Laws>
+  POINTMASS_DETAIL_ALWAYS_INLINE static unsigned forces_of(const Arrays& arrays, std::size_t first,
+                                                           std::size_t count, R t,
+                                                           const Fused& fused,
+                                                           const Laws& laws) noexcept {
+    if constexpr (std::is_same_v<Laws, NoLaws>) {
+      return 0;
+    } else {
+      return law_pass(arrays, first, count, t, fused, laws);
+    }
+  }
+
   // Particles [first, first + count): the loop marked for vectorisation (when the
   // configuration can vectorise) over a trip count that is a multiple of vector_block, which
   // lets g++'s -O2 cost model vectorise it without a remainder loop; then the remainder.
-  template <bool StorePrevious = true, class Laws = NoLaws>
-  POINTMASS_DETAIL_ALWAYS_INLINE static unsigned step_segment(const Arrays& arrays,
-                                                              std::size_t first, std::size_t count,
-                                                              const StepParameters& parameters,
-                                                              const Laws& laws) noexcept {
+  template <bool StorePrevious = true>
+  POINTMASS_DETAIL_ALWAYS_INLINE static void step_segment(
+      const Arrays& arrays, std::size_t first, std::size_t count,
+      const StepParameters& parameters) noexcept {
     const std::size_t blocked = count & ~(vector_block - 1);
     if constexpr (Layout::per_particle_retention) {
       if (parameters.refresh) refresh_segment(arrays, first, count, blocked, parameters.duration);
     }
-    unsigned beyond = 0;
     if constexpr (vectorisable && skips_movable_select) {
       // When every particle of the segment (at most movable_chunk) is movable, its loop
       // takes no select; else (an immovable particle, a NaN inverse mass) the loop with it.
       if (all_movable(arrays.inverse_mass + first, blocked)) {
-        beyond = step_loop<true, StorePrevious>(arrays, first, blocked, parameters, laws);
+        step_loop<true, StorePrevious>(arrays, first, blocked, parameters);
       } else {
-        beyond = step_loop<false, StorePrevious>(arrays, first, blocked, parameters, laws);
+        step_loop<false, StorePrevious>(arrays, first, blocked, parameters);
       }
     } else if constexpr (vectorisable) {
-      beyond = step_loop<false, StorePrevious>(arrays, first, blocked, parameters, laws);
+      step_loop<false, StorePrevious>(arrays, first, blocked, parameters);
     }
     if constexpr (vectorisable) {
       // The remainder (under vector_block particles) marked too: with -march=native it runs
       // as one or two shorter vectors instead of up to 15 scalar steps.
       POINTMASS_DETAIL_INDEPENDENT_ITERATIONS
       for (std::size_t k = blocked; k < count; ++k) {
-        beyond |= step_kept<false, StorePrevious>(arrays, first + k, parameters, laws);
+        step_kept<false, StorePrevious>(arrays, first + k, parameters);
       }
     } else {  // a power function per particle: no vector loop to ask for
       for (std::size_t k = 0; k < count; ++k) {
-        beyond |= step_kept<false, StorePrevious>(arrays, first + k, parameters, laws);
+        step_kept<false, StorePrevious>(arrays, first + k, parameters);
       }
     }
-    return beyond;
   }
   // A new step length t: each particle's d^t first, in a loop of its own (vectorised for
   // PerSecond; AccelerateThenDamp's powf is a call), so that the step's loop stays one.
@@ -364,17 +387,14 @@ class SystemKernel {
   // The step loop over particles [first, first + count), count a multiple of vector_block
   // (said again by the mask, so that the compiler needs no remainder loop): one source line
   // for both instantiations, so that the vectorisation probes see each of them.
-  template <bool AllMovable, bool StorePrevious, class Laws>
-  POINTMASS_DETAIL_ALWAYS_INLINE static unsigned step_loop(const Arrays& arrays, std::size_t first,
-                                                           std::size_t count,
-                                                           const StepParameters& parameters,
-                                                           const Laws& laws) noexcept {
+  template <bool AllMovable, bool StorePrevious>
+  POINTMASS_DETAIL_ALWAYS_INLINE static void step_loop(const Arrays& arrays, std::size_t first,
+                                                       std::size_t count,
+                                                       const StepParameters& parameters) noexcept {
     const std::size_t blocked = count & ~(vector_block - 1);
-    unsigned beyond = 0;
     POINTMASS_DETAIL_INDEPENDENT_ITERATIONS  // the step loop (tests/system probes this line)
     for (std::size_t k = 0; k < blocked; ++k)
-      beyond |= step_kept<AllMovable, StorePrevious>(arrays, first + k, parameters, laws);
-    return beyond;
+      step_kept<AllMovable, StorePrevious>(arrays, first + k, parameters);
   }
 
   // True when each of the `count` inverse masses from `inverse_mass` makes its particle
@@ -405,29 +425,16 @@ class SystemKernel {
     }
   }
 
-  // Adds the particle's accumulated force, and the laws' (after it, in their order, as
-  // forces::apply then step add them), times its inverse mass to (ax, ay, az), clears the
+  // Adds the particle's accumulated force times its inverse mass to (ax, ay, az), clears the
   // accumulator, and returns the inverse mass.
-  template <class Laws>
-  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr R apply_forces(
-      const Arrays& arrays, std::size_t i, R& ax, R& ay, R& az, const Laws& laws, R t,
-      unsigned& beyond) noexcept {
+  POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD static constexpr R apply_forces(const Arrays& arrays,
+                                                                              std::size_t i, R& ax,
+                                                                              R& ay,
+                                                                              R& az) noexcept {
     const R inverse_mass = arrays.inverse_mass[i];
-    R fx = arrays.force_x[i];
-    R fy = arrays.force_y[i];
-    R fz = arrays.force_z[i];
-    if constexpr (!std::is_same_v<Laws, NoLaws>) {
-      const Vector3<R> p{arrays.position_x[i], arrays.position_y[i], arrays.position_z[i]};
-      const Vector3<R> v{arrays.velocity_x[i], arrays.velocity_y[i], arrays.velocity_z[i]};
-      beyond = laws.add(p, v, inverse_mass, t, fx, fy, fz);
-    } else {
-      static_cast<void>(laws);
-      static_cast<void>(t);
-      static_cast<void>(beyond);
-    }
-    ax = ax + fx * inverse_mass;
-    ay = ay + fy * inverse_mass;
-    az = az + fz * inverse_mass;
+    ax = ax + arrays.force_x[i] * inverse_mass;
+    ay = ay + arrays.force_y[i] * inverse_mass;
+    az = az + arrays.force_z[i] * inverse_mass;
     arrays.force_x[i] = R(0);
     arrays.force_y[i] = R(0);
     arrays.force_z[i] = R(0);

@@ -22,6 +22,7 @@
 #include "../detail/validate.hpp"
 #include "../real.hpp"
 #include "../vector3.hpp"
+#include "fused.hpp"
 
 POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE {
@@ -74,6 +75,12 @@ class Laws {
   /// laws whose force was beyond the range of R, one bit each (law 0 the lowest): with
   /// POINTMASS_CHECKS on those are not added, as update_force and apply do not add them.
   /// Branch free, so that the step's loop vectorises around it.
+  /// The laws' fused forms, for a step's law pass (forces/fused.hpp).
+  [[nodiscard]] constexpr auto fused() const noexcept {
+    return std::apply([](const G&... law) { return std::tuple{detail::fused_form(law)...}; },
+                      laws_);
+  }
+
   template <Real R>
   POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr unsigned add(const Vector3<R>& p,
                                                                      const Vector3<R>& v,
