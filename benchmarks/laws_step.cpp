@@ -111,9 +111,8 @@ void BM_FusedSeparate8(benchmark::State& state) {
 
 void BM_Substeps8(benchmark::State& state) {
   const auto laws = forces::laws(drag, spring);
-  time_frames(state, substeps, [&](System& system) {
-    system.step(duration<R>(), laws, Substeps{substeps});
-  });
+  time_frames(state, substeps,
+              [&](System& system) { system.step(duration<R>(), laws, Substeps{substeps}); });
 }
 
 #if defined(__clang__)
