@@ -8,6 +8,7 @@
 //   * a vector of Particle<R> under pointmass's ForceRegistry (the same 2N registrations);
 //   * the same particles, each given both forces by forces::update_force, then stepped;
 //   * a ParticleSystem with ForceAccumulator: forces::apply for each generator, then step;
+//   * the same system stepped with both laws fused into the step, step(t, forces::laws(...));
 //   * a hand-written loop computing both forces and the step in one pass.
 // scripts/benchmark-forces.sh runs it and writes docs/results/forces.md.
 // Counters: items_per_second = particle-steps/s.
@@ -208,6 +209,21 @@ void BM_SystemApply(benchmark::State& state) {
   });
 }
 
+template <class R>
+void BM_SystemLaws(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  ForceSystem<R> system(n);
+  system.set_acceleration({R(0), -g<R>, R(0)});
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = system.spawn(start_position<R>(k), start_velocity<R>(k));
+    system.set_damping(i, kept_per_second<R>);
+    system.set_mass(i, mass_of<R>(k));
+  }
+  const Laws<R> laws;
+  const auto fused = forces::laws(laws.drag, laws.spring);
+  time_frames(state, [&] { system.step(duration<R>(), fused); });
+}
+
 // Both forces and the step in one pass over a plain struct, d^t kept per particle (as a
 // hand-tuned game loop would), the square roots as the library's generators take them.
 template <class R>
@@ -253,6 +269,7 @@ void sizes(benchmark::internal::Benchmark* b) {
   BENCHMARK(BM_StepOnly<R>)->Apply(sizes);     \
   BENCHMARK(BM_UpdateForce<R>)->Apply(sizes);  \
   BENCHMARK(BM_SystemApply<R>)->Apply(sizes);  \
+  BENCHMARK(BM_SystemLaws<R>)->Apply(sizes);   \
   BENCHMARK(BM_HandFused<R>)->Apply(sizes)
 
 POINTMASS_FORCES_BENCHMARKS(float);

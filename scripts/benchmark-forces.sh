@@ -25,6 +25,7 @@ rows = [("Cyclone's particles and force registry (baseline)", "BM_Cyclone"),
         ("`Particle<R>` under `ForceRegistry` (2 registrations each)", "BM_Registry"),
         ("`Particle<R>`, `forces::update_force` for each force, then `integrate`", "BM_UpdateForce"),
         ("`ParticleSystem`: `forces::apply` for each force, then `step`", "BM_SystemApply"),
+        ("`ParticleSystem`: `step(t, forces::laws(drag, spring))`", "BM_SystemLaws"),
         ("a hand-written loop: both forces and the step in one pass", "BM_HandFused")]
 for real in ("float", "double"):
     print(f"\n## {real}\n\n| loop | 1,024 | 100,000 | 1,000,000 |\n|---|---|---|---|")
