@@ -8,7 +8,7 @@
 //   * BM_Substeps8: step(t, laws, Substeps{8}), one pass;
 //   * BM_MemoryRoof: a plain loop over the system's own columns moving the bytes of one fused
 //     pass (loads p, v, force and inverse mass; stores p, v and force), bound by memory;
-//   * BM_ComputeRoof: the laws' arithmetic (the library's Drag and AnchoredSpring force) and
+//   * BM_ComputeRoof: the laws' arithmetic (the fused forms of Drag and AnchoredSpring) and
 //     the Euler step over 64 particles in local arrays (registers and L1), bound by
 //     arithmetic.
 // scripts/benchmark-laws.sh runs it and writes the table of docs/performance.md.
@@ -181,6 +181,9 @@ void BM_ComputeRoof(benchmark::State& state) {
     start.w[i] = 1.0f / mass_of(i);
   }
   Block b = start;
+  // The forms the step's law pass evaluates (forces/fused.hpp).
+  const auto fused_drag = forces::detail::fused_form(drag);
+  const auto fused_spring = forces::detail::fused_form(spring);
   const R t = duration<R>();
   const R kept = std::pow(kept_per_second, t);  // d^t, as the system keeps it for t
   std::uint64_t passes = 0;
@@ -192,8 +195,8 @@ void BM_ComputeRoof(benchmark::State& state) {
         const Vector3<R> p{b.px[i], b.py[i], b.pz[i]};
         const Vector3<R> v{b.vx[i], b.vy[i], b.vz[i]};
         const R w = b.w[i];
-        const Vector3<R> d = drag.force(p, v, w, t);
-        const Vector3<R> s = spring.force(p, v, w, t);
+        const Vector3<R> d = fused_drag.fused(p, v, w, t).force;
+        const Vector3<R> s = fused_spring.fused(p, v, w, t).force;
         const Vector3<R> f{(R(0) + d.x) + s.x, (R(0) + d.y) + s.y, (R(0) + d.z) + s.z};
         const Vector3<R> a = gravity + f * w;
         b.px[i] = p.x + v.x * t, b.py[i] = p.y + v.y * t, b.pz[i] = p.z + v.z * t;
