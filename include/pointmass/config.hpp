@@ -68,6 +68,8 @@
 //     them (-fno-exceptions) in pointmass::v0_no_exceptions. Each unit then reports a failure
 //     as its own setting says (a throw, or a message and abort()); sharing an object between
 //     the two kinds of unit fails at link time instead of choosing the wrong failure.
+//   * -fno-math-errno changes how a fused law's square root is formed (the hardware's, not the
+//     library's arithmetic: forces/fused.hpp), never its bits: units built either way agree.
 // User code names everything pointmass::X; the contract handler is one for the whole program.
 #if POINTMASS_HAS_EXCEPTIONS
 #define POINTMASS_ABI_NAMESPACE v0

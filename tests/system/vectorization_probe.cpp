@@ -5,7 +5,8 @@
 // CMakeLists.txt). With POINTMASS_PROBE_BACKWARD it instantiates only the backward walk
 // (step_range_backward), and no other loop (Lifetime's expiry pass), so a vectorised loop
 // in the report can only be that walk's. With POINTMASS_PROBE_EXPIRY it instantiates only
-// finish_step, whose expiry pass scans a block of particles for an expired one.
+// finish_step, whose expiry pass scans a block of particles for an expired one. With
+// POINTMASS_PROBE_LAWS it steps with every library law (the law pass, detail/law_pass.hpp).
 // With POINTMASS_PROBE_RELATIVE it compiles only copy_positions(out, origin) of a system with double
 // positions, or with POINTMASS_PROBE_COMPENSATED as well of one with compensated positions
 // (the renderer's hand-off from wide positions; round_via_odd has no branch).
@@ -79,6 +80,7 @@ template void exp_unit_loop<double>(const detail::SplitLog<double>*, double*, do
 #endif
 
 #else
+#include <pointmass/forces.hpp>
 #include <pointmass/particle_system.hpp>
 
 namespace pm = pointmass;
@@ -90,7 +92,14 @@ namespace pm = pointmass;
 using ProbedSystem = POINTMASS_PROBE_SYSTEM;
 
 void step_probe(ProbedSystem& system, ProbedSystem::real t) {
-#if defined(POINTMASS_PROBE_EXPIRY)
+#if defined(POINTMASS_PROBE_LAWS)
+  using R = ProbedSystem::real;  // every library law, fused into the step (the law pass)
+  namespace forces = pointmass::forces;
+  system.step(t, forces::laws(forces::Gravity<R>(), forces::Drag<R>(R(0.1), R(0.01)),
+                              forces::AnchoredSpring<R>({R(0), R(2), R(0)}, R(4), R(1)),
+                              forces::AnchoredBungee<R>({R(1), R(2), R(0)}, R(4), R(1)),
+                              forces::Buoyancy<R>(R(0.5), R(0.1), R(0))));
+#elif defined(POINTMASS_PROBE_EXPIRY)
   static_cast<void>(t);
   system.finish_step();  // the expiry pass alone
 #elif defined(POINTMASS_PROBE_BACKWARD)

@@ -98,8 +98,8 @@ inline unsigned law_pass(const Arrays& arrays_in, std::size_t first, std::size_t
   std::uint32_t any_unsure = 0;
   unsigned beyond = 0;
   const std::size_t blocked = count & ~std::size_t{15};  // as the step loop: no remainder loop
-  POINTMASS_DETAIL_LAW_ITERATIONS
-  for (std::size_t k = 0; k < blocked; ++k) {
+  POINTMASS_DETAIL_LAW_ITERATIONS  // the law loop (tests/system probes this line)
+      for (std::size_t k = 0; k < blocked; ++k) {
     beyond |= add_fused(arrays, first + k, t, fused, unsure[k], indices);
     any_unsure |= unsure[k];
   }

@@ -3,20 +3,21 @@
 //
 // ::sqrtf and ::sqrt may set errno, so under -fmath-errno (the default) a loop that calls
 // them stays scalar. square_root(x) is IEEE's sqrt bit for bit for every float and double
-// (NaN for a negative x, a NaN's own payload kept), from additions, multiplications,
-// comparisons and selects alone: 1/sqrt(x) estimated from the bit pattern and refined by
-// Newton's iteration, then of the three Reals nearest the estimate the one whose rounding
-// interval holds sqrt(x), decided exactly. No branch, and no exception but inexact that IEEE's
-// sqrt would not raise (a special input takes the arithmetic with 1 in its place).
+// (NaN for a negative x, a NaN's own payload kept), from additions, multiplications, bit
+// operations and selects alone; ordinary_root(x) is the same for a positive normal x only,
+// with no select at all, so that it vectorises at g++ -O2 on SSE2 too. 1/sqrt(x) is estimated
+// from the bit pattern and refined by Newton's (or Goldschmidt's) iteration; a float's root is
+// then rounded once from a double within 2^-52 of it, a double's is decided exactly.
+// No branch, and no exception but inexact that IEEE's sqrt would not raise.
 //
 // Exact decision: for neighbours a < b (b = a + ulp(a)), sqrt(x) > (a + b) / 2 exactly when
 // x > a b: with a = A 2^q (A an integer of R's digits), x / 4^q is an integer X near A^2, and
-// 4X > (2A + 1)^2 <=> X > A (A + 1), the midpoint's square being odd. A float's a b is exact
-// in double; a double's is p + e by Dekker's product, p within a factor 2 of x, so x - p is
-// exact and x > a b <=> x - p > e. The split is done on the bit pattern, not by Veltkamp's
-// multiplication, so that a compiler contracting to fused multiply-adds cannot change it.
+// 4X > (2A + 1)^2 <=> X > A (A + 1), the midpoint's square being odd. The same bound keeps a
+// float's root 2^-51 (relative) from every float midpoint. A double's a b is split into exact
+// partial products (halves cut on the bit pattern, not by Veltkamp's multiplication), whose
+// differences from x are exact too: no value depends on contraction into fused multiply-adds.
 //
-// Owns: detail::square_root.
+// Owns: detail::square_root, detail::ordinary_root.
 // Must not include: anything but config.hpp and real.hpp.
 #pragma once
 
@@ -48,24 +49,48 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R step_bits(
   return __builtin_bit_cast(R, static_cast<Bits>(__builtin_bit_cast(Bits, x) + by));
 }
 
-/// 1/sqrt(x) for a double x in [2^-1000, 2^1000], to about 2^-(2^n 4.9): the bit pattern's
-/// estimate (3.4% off at most) and n steps of Newton's iteration.
-template <int Steps>
-POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr double inverse_root(double x) noexcept {
-  const std::uint64_t estimate = 0x5fe6eb50c7b537a9u - (__builtin_bit_cast(std::uint64_t, x) >> 1);
-  double r = __builtin_bit_cast(double, estimate);
-  const double half = x * 0.5;
-  for (int step = 0; step < Steps; ++step) r = r * (1.5 - half * r * r);
-  return r;
+/// sqrt(x) for a positive normal float. The estimate is carried to double precision, where it
+/// is rounded once: a float's root lies at least 2^-51 (relative) from a float midpoint (the
+/// header's X != A (A + 1) bound) and the double estimate is within 2^-52 of it, so the cast
+/// is the correct rounding and no decision is needed. Every product is of two normal floats
+/// near 1 / sqrt(x) and sqrt(x), so no step underflows (nor depends on denormal modes).
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr float ordinary_root(float x) noexcept {
+  // Half of 1/sqrt(x) from the bit pattern (3.4% off), then two of Goldschmidt's coupled steps
+  // in float: y -> sqrt(x), g -> 1 / (2 sqrt(x)), each to about 5e-6.
+  float g = __builtin_bit_cast(float, 0x5eb759dfu - (__builtin_bit_cast(std::uint32_t, x) >> 1));
+  float y = x * (g + g);
+  for (int step = 0; step < 2; ++step) {
+    const float e = 0.5f - y * g;
+    y = y + y * e;
+    g = g + g * e;
+  }
+  // One more step in double (to about 4e-11), then Heron's correction: within 0.4 ulp of the
+  // double root, rounded once more (fused or not, the error stays under 2^-52).
+  const auto wide = static_cast<double>(x);
+  double y_wide = static_cast<double>(y);
+  double g_wide = static_cast<double>(g);
+  const double e = 0.5 - y_wide * g_wide;
+  y_wide = y_wide + y_wide * e;
+  g_wide = g_wide + g_wide * e;
+  return static_cast<float>(y_wide + (wide - y_wide * y_wide) * g_wide);
 }
 
-/// x > a b, exactly, for doubles a, b > 0 whose rounded product lies within a factor 2 of x
-/// and whose partial products neither overflow nor underflow.
-POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr bool above_product(double x, double a,
-                                                                         double b) noexcept {
-  // The high half: the 26 leading bits, rounded (the low half then fits in 26 bits too).
+/// The sign bit of v, as 0 or 1 (a mask built from a double comparison does not vectorise
+/// at g++ -O2 with SSE2; a shift does).
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr std::uint64_t sign_of(double v) noexcept {
+  return __builtin_bit_cast(std::uint64_t, v) >> 63;
+}
+
+/// 1 if m > a b, else 0, exactly, for m in [1, 4) and neighbours a < b near sqrt(m) (the
+/// midpoint of a and b within an ulp of sqrt(m)). The 26-bit halves (split on the bit
+/// pattern) make every partial product exact, and each difference is exact too: m - a_h b_h
+/// is a multiple of 2^-52 under 2^-23, the next one of 2^-77 under 2^-24. With no rounded
+/// product, contraction into fused multiply-adds cannot change any value (only exact products
+/// and exact sums are fused), and the last difference's sign is exact either way.
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr std::uint64_t above_product(
+    double m, double a, double b) noexcept {
   constexpr std::uint64_t low_bits = (std::uint64_t{1} << 27) - 1;
-  const auto high = [](double v) {
+  const auto high = [](double v) {  // the 26 leading bits, rounded
     return __builtin_bit_cast(
         double, (__builtin_bit_cast(std::uint64_t, v) + (std::uint64_t{1} << 26)) & ~low_bits);
   };
@@ -73,47 +98,36 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr bool above_product(double 
   const double a_low = a - a_high;
   const double b_high = high(b);
   const double b_low = b - b_high;
-  const double p = a * b;
-  const double high_product = a_high * b_high;
-  double e = high_product - p;
-  e += a_high * b_low;
-  e += a_low * b_high;
-  e += a_low * b_low;  // a b = p + e
-  return x - p > e;
+  const double rest = ((m - a_high * b_high) - a_high * b_low) - a_low * b_high;
+  const double over = rest - a_low * b_low;  // m - a b
+  return sign_of(0.0 - over);  // 0 - z: +0 for either zero (a -0 would read as "above")
 }
 
-/// sqrt(x) for a float in [2^-149, 2^128): the double estimate rounded to float, then the
-/// neighbour whose interval holds the root.
-POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr float root_of_ordinary(float x) noexcept {
-  const auto wide = static_cast<double>(x);
-  const auto y = static_cast<float>(wide * inverse_root<3>(wide));  // within 2^-34 of it
-  const float below = step_bits(y, ~std::uint32_t{0});
-  const float above = step_bits(y, std::uint32_t{1});
-  const auto y_wide = static_cast<double>(y);
-  const bool over_low = wide > static_cast<double>(below) * y_wide;
-  const bool over_high = wide > y_wide * static_cast<double>(above);
-  // Chosen among doubles: a double comparison's mask is 64 bits wide (SSE2 cannot narrow it).
-  return static_cast<float>(pick(over_high, static_cast<double>(above),
-                                 pick(over_low, y_wide, static_cast<double>(below))));
-}
-
-/// sqrt(x) for a positive finite double: scaled by an even power of 2 into [2^-500, 2^500]
-/// (exact both ways), estimated to within an ulp by one Heron step on Newton's 1/sqrt, and
-/// decided among the three nearest doubles.
-POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr double root_of_ordinary(double x) noexcept {
-  const bool tiny = x < 0x1p-500;
-  const bool huge = x > 0x1p500;
-  const double scaled = x * pick(tiny, 0x1p600, pick(huge, 0x1p-600, 1.0));
-  const double r = inverse_root<4>(scaled);
-  const double estimate = scaled * r;
-  const double square = estimate * estimate;
-  const double y = estimate + (r * 0.5) * (scaled - square);  // scaled - square is exact
-  const double below = step_bits(y, ~std::uint64_t{0});
-  const double above = step_bits(y, std::uint64_t{1});
-  const bool over_low = above_product(scaled, below, y);
-  const bool over_high = above_product(scaled, y, above);
-  const double root = pick(over_high, above, pick(over_low, y, below));
-  return root * pick(tiny, 0x1p-300, pick(huge, 0x1p300, 1.0));
+/// sqrt(x) for a positive normal double. x = m 4^k with m in [1, 4) by integer arithmetic,
+/// so no step can overflow or underflow; 1/sqrt(m) by the bit pattern and three Newton steps
+/// (about 3e-11), Heron's correction to t = y + d within 0.4 ulp of sqrt(m), and of the two
+/// doubles around the midpoint nearest t (t's side of y = fl(t), from Fast2Sum's error) the
+/// one the exact test picks: within 0.9 ulp, sqrt(m) rounds to one of those two.
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr double ordinary_root(double x) noexcept {
+  constexpr std::uint64_t exponent = 0xfff0000000000000u;
+  const std::uint64_t bits = __builtin_bit_cast(std::uint64_t, x);
+  // (k + 512) << 52, k = floor((E - 1023) / 2) for the biased exponent E; then k << 52.
+  const std::uint64_t shift =
+      (((bits + (std::uint64_t{1} << 52)) >> 1) & exponent) - (std::uint64_t{512} << 52);
+  const double m = __builtin_bit_cast(double, static_cast<std::uint64_t>(bits - (shift + shift)));
+  double r =
+      __builtin_bit_cast(double, 0x5fe6eb50c7b537a9u - (__builtin_bit_cast(std::uint64_t, m) >> 1));
+  const double half = m * 0.5;
+  for (int step = 0; step < 3; ++step) r = r * (1.5 - half * r * r);
+  const double y = m * r;
+  const double d = (m - y * y) * (r * 0.5);
+  const double t = y + d;
+  const double error = d - (t - y);  // t's rounding error, whose sign says where y + d lies
+  const std::uint64_t low_bits = __builtin_bit_cast(std::uint64_t, t) - sign_of(error);
+  const double low = __builtin_bit_cast(double, low_bits);
+  const double high = __builtin_bit_cast(double, static_cast<std::uint64_t>(low_bits + 1));
+  const std::uint64_t root = low_bits + above_product(m, low, high);
+  return __builtin_bit_cast(double, static_cast<std::uint64_t>(root + shift));
 }
 
 /// IEEE's sqrt(x), bit for bit, for float and double; see the header's comment.
@@ -126,7 +140,12 @@ template <class R>
   const Bits bits = __builtin_bit_cast(Bits, x);
   const bool ordinary = static_cast<Bits>(bits - Bits{1}) < static_cast<Bits>(infinity - 1);
   const bool negative = static_cast<Bits>(bits - sign - Bits{1}) < infinity;  // -0 < x, no NaN
-  const R root = root_of_ordinary(pick(ordinary, x, R(1)));
+  // A subnormal x is scaled into the normals by an even power of 2 (exact both ways).
+  constexpr Bits least_normal = Bits{1} << (sizeof(R) == 4 ? 23 : 52);
+  const bool subnormal = bits < least_normal;
+  const R scale = pick(subnormal, sizeof(R) == 4 ? R(0x1p24) : R(0x1p54), R(1));
+  const R unscale = pick(subnormal, sizeof(R) == 4 ? R(0x1p-12) : R(0x1p-27), R(1));
+  const R root = ordinary_root(pick(ordinary, x, R(1)) * scale) * unscale;
   // ±0, +infinity and NaN are their own root (x + x quiets a NaN, as sqrt does); a negative
   // x's is 0 / 0 (or, for -infinity, NaN / NaN), formed only where x is negative.
   const R itself = pick(ordinary | negative, R(0), x);

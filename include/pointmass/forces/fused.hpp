@@ -48,7 +48,7 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R plain_root(R x) noexcept
       else return __builtin_sqrt(x);
     }
 #endif
-    return pd::root_of_ordinary(x);
+    return pd::ordinary_root(x);
   }
 }
 
