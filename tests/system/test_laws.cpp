@@ -174,6 +174,34 @@ TEST_CASE_TEMPLATE(
   CHECK(same_bits(system.velocity(0), single.velocity()));
 }
 
+TEST_CASE_TEMPLATE("laws: inputs beyond the plain formulas' range take force()'s bits", R, float,
+                   double) {
+  // At rest, at the spring's anchor, a speed whose square overflows, one whose square
+  // underflows, a length whose square underflows: the fused forms are unsure there, and the
+  // law pass adds force() (a scalar loop), as apply does; particles around them are sure.
+  using Sparks = WithForces<R, damping::PerSecond, position::Euler>;
+  const Generators<R> g;
+  const R t = R(1) / R(60);
+  const R huge = std::numeric_limits<R>::max() / R(2);  // its square overflows
+  const R big = R(2) * std::sqrt(huge);                  // |v|^2 = 4 huge: overflows
+  Sparks unfused;
+  for (int copy = 0; copy < 40; ++copy) {  // 200 particles: whole vectors and a remainder
+    unfused.spawn({R(1), R(2), R(3)}, {R(0), R(0), R(0)});
+    unfused.spawn({R(0), R(5), R(0)}, {R(1), R(0), R(0)});  // the spring's anchor
+    unfused.spawn({R(1), R(1), R(1)}, {big, R(0), R(0)});
+    unfused.spawn({R(1), R(1), R(1)}, {std::numeric_limits<R>::min(), R(0), R(0)});
+    unfused.spawn({std::numeric_limits<R>::min(), R(5), R(0)}, {R(0), R(1), R(0)});
+  }
+  for (std::size_t i = 0; i < unfused.size(); ++i) unfused.set_mass(i, R(2));
+  Sparks fused = unfused;
+  forces::apply(g.drag, unfused, t);
+  forces::apply(g.spring, unfused, t);
+  forces::apply(g.gravity, unfused, t);
+  unfused.step(t);
+  fused.step(t, forces::laws(g.drag, g.spring, g.gravity));
+  CHECK(same_state(unfused, fused));
+}
+
 namespace {
 // k separate steps of t / k against one pass of k sub-steps, particle by particle (the spawn
 // number column follows each through the removals of expiry).
