@@ -183,7 +183,7 @@ TEST_CASE_TEMPLATE("laws: inputs beyond the plain formulas' range take force()'s
   const Generators<R> g;
   const R t = R(1) / R(60);
   const R huge = std::numeric_limits<R>::max() / R(2);  // its square overflows
-  const R big = R(2) * std::sqrt(huge);                  // |v|^2 = 4 huge: overflows
+  const R big = R(2) * std::sqrt(huge);                 // |v|^2 = 4 huge: overflows
   Sparks unfused;
   for (int copy = 0; copy < 40; ++copy) {  // 200 particles: whole vectors and a remainder
     unfused.spawn({R(1), R(2), R(3)}, {R(0), R(0), R(0)});

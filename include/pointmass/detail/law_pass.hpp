@@ -38,13 +38,39 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 /// The most particles one law pass takes: their arrays stay in L1 for the step after it.
 inline constexpr std::size_t law_chunk = 256;
 
+// One fused law's force added to (gx, gy, gz) where finite; its bit in `beyond` where not.
+// A function, not a lambda: always inlined (g++ left a lambda a call, and the loop scalar).
+template <class Law, class R, class Flag>
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr void add_law(
+    const Law& law, const Vector3<R>& p, const Vector3<R>& v, R w, R t, unsigned bit, R& gx, R& gy,
+    R& gz, Flag& sure, Flag& beyond) noexcept {
+  const forces::detail::FusedForce<R> f = law.fused(p, v, w, t);
+  sure &= f.sure;
+#if POINTMASS_CHECKS
+  const bool finite =
+      (static_cast<int>(real_isfinite(f.force.x)) & static_cast<int>(real_isfinite(f.force.y)) &
+       static_cast<int>(real_isfinite(f.force.z))) != 0;
+  gx = select_if(finite, gx + f.force.x, gx);  // not added where beyond range
+  gy = select_if(finite, gy + f.force.y, gy);
+  gz = select_if(finite, gz + f.force.z, gz);
+  beyond |= static_cast<Flag>(static_cast<Flag>(!finite) << bit);
+#else
+  static_cast<void>(bit);
+  static_cast<void>(beyond);
+  gx = gx + f.force.x;
+  gy = gy + f.force.y;
+  gz = gz + f.force.z;
+#endif
+}
+
 // Particle i's sum, accumulated force then each fused law's, into the accumulator where every
 // law vouched for it; returns the laws beyond range (bit I for law I, 0 where unsure) and
 // sets `unsure`.
 template <class Arrays, class R, class Fused, std::size_t... I>
-POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr unsigned add_fused(
-    const Arrays& a, std::size_t i, R t, const Fused& fused, std::uint32_t& unsure,
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr forces::detail::LaneFlag<R> add_fused(
+    const Arrays& a, std::size_t i, R t, const Fused& fused, forces::detail::LaneFlag<R>& unsure,
     std::index_sequence<I...>) noexcept {
+  using Flag = forces::detail::LaneFlag<R>;
   const Vector3<R> p{a.position_x[i], a.position_y[i], a.position_z[i]};
   const Vector3<R> v{a.velocity_x[i], a.velocity_y[i], a.velocity_z[i]};
   const R w = a.inverse_mass[i];
@@ -54,33 +80,16 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr unsigned add_fused(
   R gx = fx;
   R gy = fy;
   R gz = fz;
-  unsigned beyond = 0;
-  std::uint32_t sure = 1;
-  const auto add = [&](const auto& law, unsigned bit) {
-    const forces::detail::FusedForce<R> f = law.fused(p, v, w, t);
-    sure &= static_cast<std::uint32_t>(f.sure);
-#if POINTMASS_CHECKS
-    const bool finite =
-        (static_cast<int>(real_isfinite(f.force.x)) & static_cast<int>(real_isfinite(f.force.y)) &
-         static_cast<int>(real_isfinite(f.force.z))) != 0;
-    gx = select_if(finite, gx + f.force.x, gx);  // not added where beyond range
-    gy = select_if(finite, gy + f.force.y, gy);
-    gz = select_if(finite, gz + f.force.z, gz);
-    beyond |= static_cast<unsigned>(!finite) << bit;
-#else
-    static_cast<void>(bit);
-    gx = gx + f.force.x;
-    gy = gy + f.force.y;
-    gz = gz + f.force.z;
-#endif
-  };
-  (add(std::get<I>(fused), static_cast<unsigned>(I)), ...);
+  Flag beyond = 0;
+  Flag sure = 1;
+  (add_law(std::get<I>(fused), p, v, w, t, static_cast<unsigned>(I), gx, gy, gz, sure, beyond),
+   ...);
   const bool kept = sure != 0;
   a.force_x[i] = select_if(kept, gx, fx);  // unsure: the scalar loop adds force() to fx
   a.force_y[i] = select_if(kept, gy, fy);
   a.force_z[i] = select_if(kept, gz, fz);
-  unsure = sure ^ 1u;
-  return kept ? beyond : 0u;
+  unsure = sure ^ Flag { 1 };
+  return beyond & (Flag{0} - sure);  // none where unsure: the scalar loop reports those
 }
 
 /// Adds the laws' forces to particles [first, first + count) of `arrays` (count <=
@@ -94,9 +103,10 @@ inline unsigned law_pass(const Arrays& arrays_in, std::size_t first, std::size_t
   const Arrays arrays = arrays_in;
   const Fused fused = fused_in;
   constexpr auto indices = std::make_index_sequence<std::tuple_size_v<Fused>>{};
-  std::uint32_t unsure[law_chunk];
-  std::uint32_t any_unsure = 0;
-  unsigned beyond = 0;
+  using Flag = forces::detail::LaneFlag<R>;
+  Flag unsure[law_chunk];
+  Flag any_unsure = 0;
+  Flag beyond = 0;
   const std::size_t blocked = count & ~std::size_t{15};  // as the step loop: no remainder loop
   POINTMASS_DETAIL_LAW_ITERATIONS  // the law loop (tests/system probes this line)
       for (std::size_t k = 0; k < blocked; ++k) {
@@ -107,7 +117,7 @@ inline unsigned law_pass(const Arrays& arrays_in, std::size_t first, std::size_t
     beyond |= add_fused(arrays, first + k, t, fused, unsure[k], indices);
     any_unsure |= unsure[k];
   }
-  if (any_unsure == 0) return beyond;
+  if (any_unsure == 0) return static_cast<unsigned>(beyond);
   for (std::size_t k = 0; k < count; ++k) {  // rare: inputs beyond the plain formulas' range
     if (unsure[k] == 0) continue;
     const std::size_t i = first + k;
@@ -121,7 +131,7 @@ inline unsigned law_pass(const Arrays& arrays_in, std::size_t first, std::size_t
     arrays.force_y[i] = fy;
     arrays.force_z[i] = fz;
   }
-  return beyond;
+  return static_cast<unsigned>(beyond);
 }
 
 }  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail

@@ -15,7 +15,9 @@
 // Must not include: particle.hpp, particle_system.hpp.
 #pragma once
 
+#include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "../config.hpp"
 #include "../detail/exponential.hpp"
@@ -29,10 +31,15 @@ namespace pointmass::inline POINTMASS_ABI_NAMESPACE::forces::detail {
 
 namespace pd = pointmass::detail;
 
+/// An integer as wide as R: a loop's flags then take R's lanes (g++ -O2 vectorises a loop
+/// with one width of lane only). Not bool: a bool member stays in memory.
+template <Real R>
+using LaneFlag = std::conditional_t<sizeof(R) == 8, std::uint64_t, std::uint32_t>;
+
 template <Real R>
 struct FusedForce {
   Vector3<R> force;
-  int sure;  // 1: the bits of the generator's force() (an int: a bool member stays in memory)
+  LaneFlag<R> sure;  // 1: the bits of the generator's force()
 };
 
 /// sqrt(x) for a square magnitude the plain formula takes (square_is_exact_enough: positive
@@ -56,7 +63,7 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R plain_root(R x) noexcept
 template <Real R>
 struct PlainLength {
   R length;
-  int sure;
+  LaneFlag<R> sure;
 };
 template <Real R>
 POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr PlainLength<R> plain_length(
@@ -66,7 +73,7 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr PlainLength<R> plain_lengt
   constexpr R least = std::numeric_limits<R>::min() / std::numeric_limits<R>::epsilon();
   const bool in_range = (static_cast<int>(square >= least) &
                          static_cast<int>(square <= std::numeric_limits<R>::max())) != 0;
-  return {plain_root(pd::select_if(in_range, square, R(1))), static_cast<int>(in_range)};
+  return {plain_root(pd::select_if(in_range, square, R(1))), static_cast<LaneFlag<R>>(in_range)};
 }
 
 /// Any law: its own force() (sure).
@@ -118,8 +125,8 @@ struct FusedDrag {
     const PlainLength<R> speed = plain_length(v);
     const R per_speed = pd::select_if(quadratic, k1 + k2 * speed.length, k1);
     // | and &, not || and &&: a branch would keep the loop scalar.
-    return {v * -per_speed, (speed.sure | static_cast<int>(!quadratic)) &
-                                static_cast<int>(real_isfinite(per_speed))};
+    return {v * -per_speed, (speed.sure | static_cast<LaneFlag<R>>(!quadratic)) &
+                                static_cast<LaneFlag<R>>(real_isfinite(per_speed))};
   }
 };
 template <Real R>
@@ -150,7 +157,7 @@ struct FusedAnchoredSpring {
     return {{pd::select_if(acts, d.x / length * magnitude, R(0)),
              pd::select_if(acts, d.y / length * magnitude, R(0)),
              pd::select_if(acts, d.z / length * magnitude, R(0))},
-            s.sure | static_cast<int>(!stiff)};
+            s.sure | static_cast<LaneFlag<R>>(!stiff)};
   }
 };
 template <Real R, bool IsBungee>
