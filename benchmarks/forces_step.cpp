@@ -191,9 +191,9 @@ template <class R>
 using ForceSystem = ParticleSystem<R, damping::PerSecond, position::Euler,
                                    features::PerParticleDamping, features::ForceAccumulator>;
 
+// The job's n particles in a ForceSystem.
 template <class R>
-void BM_SystemApply(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
+ForceSystem<R> force_system(std::size_t n) {
   ForceSystem<R> system(n);
   system.set_acceleration({R(0), -g<R>, R(0)});
   for (std::size_t k = 0; k < n; ++k) {
@@ -201,6 +201,12 @@ void BM_SystemApply(benchmark::State& state) {
     system.set_damping(i, kept_per_second<R>);
     system.set_mass(i, mass_of<R>(k));
   }
+  return system;
+}
+
+template <class R>
+void BM_SystemApply(benchmark::State& state) {
+  ForceSystem<R> system = force_system<R>(static_cast<std::size_t>(state.range(0)));
   const Laws<R> laws;
   time_frames(state, [&] {
     forces::apply(laws.drag, system, duration<R>());
@@ -211,14 +217,7 @@ void BM_SystemApply(benchmark::State& state) {
 
 template <class R>
 void BM_SystemLaws(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  ForceSystem<R> system(n);
-  system.set_acceleration({R(0), -g<R>, R(0)});
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t i = system.spawn(start_position<R>(k), start_velocity<R>(k));
-    system.set_damping(i, kept_per_second<R>);
-    system.set_mass(i, mass_of<R>(k));
-  }
+  ForceSystem<R> system = force_system<R>(static_cast<std::size_t>(state.range(0)));
   const Laws<R> laws;
   const auto fused = forces::laws(laws.drag, laws.spring);
   time_frames(state, [&] { system.step(duration<R>(), fused); });

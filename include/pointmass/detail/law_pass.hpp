@@ -10,13 +10,14 @@
 // accumulated force and a scalar loop adds the laws' force() after. Either way the sums are
 // forces::apply's, bit for bit.
 //
-// Owns: law_chunk, law_pass.
+// Owns: law_chunk, law_pass, NoLaws, fused_of, forces_of.
 // Must not include: system_kernel.hpp and above (the kernel calls law_pass).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 #include "../config.hpp"
@@ -132,6 +133,29 @@ inline unsigned law_pass(const Arrays& arrays_in, std::size_t first, std::size_t
     arrays.force_z[i] = fz;
   }
   return static_cast<unsigned>(beyond);
+}
+
+struct NoLaws {};  // a step whose forces are the accumulator's alone
+
+/// The laws' fused forms (forces/fused.hpp), made once a walk; none without laws.
+constexpr NoLaws fused_of(const NoLaws&) noexcept { return {}; }
+template <class Laws>
+constexpr auto fused_of(const Laws& laws) noexcept {
+  return laws.fused();
+}
+
+/// The laws' forces added to particles [first, first + count) (law_pass); 0 without laws.
+template <class Arrays, class R, class Fused, class Laws>
+POINTMASS_DETAIL_ALWAYS_INLINE inline unsigned forces_of(const Arrays& arrays, std::size_t first,
+                                                         std::size_t count, R t, const Fused& fused,
+                                                         const Laws& laws) noexcept {
+  if constexpr (std::is_same_v<Laws, NoLaws>) {
+    return 0;
+  } else if constexpr (std::tuple_size_v<Fused> == 0) {  // forces::laws(): sub-steps alone
+    return 0;
+  } else {
+    return law_pass(arrays, first, count, t, fused, laws);
+  }
 }
 
 }  // namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail

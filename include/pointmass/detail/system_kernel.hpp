@@ -50,7 +50,6 @@ POINTMASS_DETAIL_UNFUSED_BEGIN
 namespace pointmass::inline POINTMASS_ABI_NAMESPACE::detail {
 
 struct NoFactors {};
-struct NoLaws {};  // a step whose forces are the accumulator's alone
 
 // Adds a step of t to an age kept as age + error (Kahan's sum): the steps' exact sum.
 template <class R>
@@ -317,25 +316,6 @@ class SystemKernel {
   }
 
  protected:
-  // The laws' fused forms (forces/fused.hpp), made once a walk; none without laws.
-  static constexpr auto fused_of(const NoLaws&) noexcept { return NoLaws{}; }
-  template <class Laws>
-  static constexpr auto fused_of(const Laws& laws) noexcept {
-    return laws.fused();
-  }
-  // The laws' forces added to particles [first, first + count) (law_pass); 0 without laws.
-  template <class Fused, class Laws>
-  POINTMASS_DETAIL_ALWAYS_INLINE static unsigned forces_of(const Arrays& arrays, std::size_t first,
-                                                           std::size_t count, R t,
-                                                           const Fused& fused,
-                                                           const Laws& laws) noexcept {
-    if constexpr (std::is_same_v<Laws, NoLaws>) {
-      return 0;
-    } else {
-      return law_pass(arrays, first, count, t, fused, laws);
-    }
-  }
-
   // Particles [first, first + count): the loop marked for vectorisation (when the
   // configuration can vectorise) over a trip count that is a multiple of vector_block, which
   // lets g++'s -O2 cost model vectorise it without a remainder loop; then the remainder.

@@ -56,7 +56,7 @@ class SubstepKernel : public SystemKernel<R, D, P, Layout> {
     StepParameters later = parameters_in;
     later.refresh = false;  // the first sub-step of each chunk refreshed the retention
     const Laws laws = laws_in;
-    const auto fused = Base::fused_of(laws);
+    const auto fused = fused_of(laws);
     const R t = first_step.duration;
     unsigned beyond = 0;
     for (std::size_t first = begin; first < end; first += substep_chunk) {
@@ -66,19 +66,19 @@ class SubstepKernel : public SystemKernel<R, D, P, Layout> {
           if constexpr (Layout::per_particle_retention) {
             if (first_step.refresh) Base::refresh_retention(arrays, i, t);
           }
-          beyond |= Base::forces_of(arrays, i, 1, t, fused, laws);
+          beyond |= forces_of(arrays, i, 1, t, fused, laws);
           Base::step_kept(arrays, i, first_step);
           for (std::size_t s = 1; s < substeps && !expired(arrays, i); ++s) {
-            beyond |= Base::forces_of(arrays, i, 1, t, fused, laws);
+            beyond |= forces_of(arrays, i, 1, t, fused, laws);
             Base::template step_kept<false, false>(arrays, i, later);
           }
         }
         continue;
       }
-      beyond |= Base::forces_of(arrays, first, count, t, fused, laws);
+      beyond |= forces_of(arrays, first, count, t, fused, laws);
       Base::step_segment(arrays, first, count, first_step);
       for (std::size_t s = 1; s < substeps; ++s) {
-        beyond |= Base::forces_of(arrays, first, count, t, fused, laws);
+        beyond |= forces_of(arrays, first, count, t, fused, laws);
         Base::template step_segment<false>(arrays, first, count, later);
       }
     }
