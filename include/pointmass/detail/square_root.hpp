@@ -6,14 +6,13 @@
 // (NaN for a negative x, a NaN's own payload kept), from additions, multiplications, bit
 // operations and selects alone; ordinary_root(x) is the same for a positive normal x only,
 // with no select at all, so that it vectorises at g++ -O2 on SSE2 too. 1/sqrt(x) is estimated
-// from the bit pattern and refined by Newton's (or Goldschmidt's) iteration; a float's root is
-// then rounded once from a double within 2^-52 of it, a double's is decided exactly.
+// from the bit pattern and refined by Newton's (or Goldschmidt's) iteration, then the root is
+// decided exactly between two neighbours (a float's in float and 32-bit lanes alone).
 // No branch, and no exception but inexact that IEEE's sqrt would not raise.
 //
 // Exact decision: for neighbours a < b (b = a + ulp(a)), sqrt(x) > (a + b) / 2 exactly when
 // x > a b: with a = A 2^q (A an integer of R's digits), x / 4^q is an integer X near A^2, and
-// 4X > (2A + 1)^2 <=> X > A (A + 1), the midpoint's square being odd. The same bound keeps a
-// float's root 2^-51 (relative) from every float midpoint. A double's a b is split into exact
+// 4X > (2A + 1)^2 <=> X > A (A + 1), the midpoint's square being odd. a b is split into exact
 // partial products (halves cut on the bit pattern, not by Veltkamp's multiplication), whose
 // differences from x are exact too: no value depends on contraction into fused multiply-adds.
 //
@@ -49,32 +48,6 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr R step_bits(
   return __builtin_bit_cast(R, static_cast<Bits>(__builtin_bit_cast(Bits, x) + by));
 }
 
-/// sqrt(x) for a positive normal float. The estimate is carried to double precision, where it
-/// is rounded once: a float's root lies at least 2^-51 (relative) from a float midpoint (the
-/// header's X != A (A + 1) bound) and the double estimate is within 2^-52 of it, so the cast
-/// is the correct rounding and no decision is needed. Every product is of two normal floats
-/// near 1 / sqrt(x) and sqrt(x), so no step underflows (nor depends on denormal modes).
-POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr float ordinary_root(float x) noexcept {
-  // Half of 1/sqrt(x) from the bit pattern (3.4% off), then two of Goldschmidt's coupled steps
-  // in float: y -> sqrt(x), g -> 1 / (2 sqrt(x)), each to about 5e-6.
-  float g = __builtin_bit_cast(float, 0x5eb759dfu - (__builtin_bit_cast(std::uint32_t, x) >> 1));
-  float y = x * (g + g);
-  for (int step = 0; step < 2; ++step) {
-    const float e = 0.5f - y * g;
-    y = y + y * e;
-    g = g + g * e;
-  }
-  // One more step in double (to about 4e-11), then Heron's correction: within 0.4 ulp of the
-  // double root, rounded once more (fused or not, the error stays under 2^-52).
-  const auto wide = static_cast<double>(x);
-  double y_wide = static_cast<double>(y);
-  double g_wide = static_cast<double>(g);
-  const double e = 0.5 - y_wide * g_wide;
-  y_wide = y_wide + y_wide * e;
-  g_wide = g_wide + g_wide * e;
-  return static_cast<float>(y_wide + (wide - y_wide * y_wide) * g_wide);
-}
-
 /// The sign bit of v, as 0 or 1 (a mask built from a double comparison does not vectorise
 /// at g++ -O2 with SSE2; a shift does).
 POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr std::uint64_t sign_of(double v) noexcept {
@@ -101,6 +74,51 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr std::uint64_t above_produc
   const double rest = ((m - a_high * b_high) - a_high * b_low) - a_low * b_high;
   const double over = rest - a_low * b_low;  // m - a b
   return sign_of(0.0 - over);  // 0 - z: +0 for either zero (a -0 would read as "above")
+}
+
+/// 1 if m > a (a + 2^-23), else 0, exactly, for m in [1, 4) and a float a near sqrt(m), in
+/// [1, 2] or 1 - 2^-24 (whose test then says "above": m >= 1): a and its upper neighbour when
+/// a < 2. With a = a_h + a_l, a_h a multiple of 2^-11 and |a_l| <= 2^-12 (a_l a multiple of
+/// 2^-23), m - a b = m - a_h a_h - a_h (2 a_l) - a_h 2^-23 - a_l (a_l + 2^-23): each product
+/// exact (12 bits by 12, 11 by 12 unless a_l = +-2^-12), the first sum a multiple of 2^-23
+/// under 2^-9 and the next two of 2^-34 under 2^-20 (all exact), the last one's sign exact,
+/// fused or not. Computed as a b - m, which is never -0, so its sign bit is the answer.
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr std::uint32_t above_product(
+    float m, float a) noexcept {
+  constexpr std::uint32_t low_bits = (std::uint32_t{1} << 12) - 1;
+  constexpr float ulp = 0x1p-23f;           // of a in [1, 2)
+  const float a_high = __builtin_bit_cast(  // the 12 leading bits, rounded
+      float, (__builtin_bit_cast(std::uint32_t, a) + (std::uint32_t{1} << 11)) & ~low_bits);
+  const float a_low = a - a_high;
+  const float rest = ((a_high * a_high - m) + a_high * (a_low + a_low)) + a_high * ulp;
+  return __builtin_bit_cast(std::uint32_t, rest + a_low * (a_low + ulp)) >> 31;
+}
+
+/// sqrt(x) for a positive normal float, in float and 32-bit integer lanes alone (twice the
+/// lanes of double steps, and no conversions; masks never need 64-bit lanes). x = m 4^k with
+/// m in [1, 4), so no step overflows or underflows; 1/(2 sqrt(m)) from the bit pattern (3.4%
+/// off) and two of Goldschmidt's coupled steps (about 5e-6); Heron's correction gives s within
+/// e = 0.36 ulp of sqrt(m) (y y's rounding if unfused, times g <= 0.354; 0.25 ulp for m < 2).
+/// t = fl(s - 7/16 ulp) then has sqrt(m) in [t - ulp/2, t + 3 ulp/2] (as 7/16 >= e and
+/// 7/16 + e <= 1), so the root is t or its upper neighbour, which the exact test decides;
+/// near 1, 7/16 + 0.25 < 3/4 keeps t >= 1 - 2^-24, and t = 2 is kept (m < 4 < 2 (2 + 2^-23)).
+POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr float ordinary_root(float x) noexcept {
+  const std::uint32_t bits = __builtin_bit_cast(std::uint32_t, x);
+  // m's biased exponent is 127 or 128, of x's parity (so x / m is an even power of 2).
+  const std::uint32_t m_bits = ((bits ^ 0x00800000u) & 0x00ffffffu) + 0x3f800000u;
+  const std::uint32_t half_m_bits = m_bits >> 1;
+  const auto shift = static_cast<std::uint32_t>((bits >> 1) - half_m_bits);  // k << 23
+  const float m = __builtin_bit_cast(float, m_bits);
+  float g = __builtin_bit_cast(float, static_cast<std::uint32_t>(0x5eb759dfu - half_m_bits));
+  float y = m * (g + g);
+  for (int step = 0; step < 2; ++step) {  // y -> sqrt(m), g -> 1 / (2 sqrt(m))
+    const float e = 0.5f - y * g;
+    y = y + y * e;
+    g = g + g * e;
+  }
+  const float t = y + ((m - y * y) * g - 0x1.cp-25f);
+  const std::uint32_t root = __builtin_bit_cast(std::uint32_t, t) + above_product(m, t);
+  return __builtin_bit_cast(float, static_cast<std::uint32_t>(root + shift));
 }
 
 /// sqrt(x) for a positive normal double. x = m 4^k with m in [1, 4) by integer arithmetic,

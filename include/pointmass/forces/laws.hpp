@@ -71,15 +71,16 @@ class Laws {
   static constexpr std::size_t size = sizeof...(G);
   constexpr explicit Laws(const G&... laws) noexcept : laws_(laws...) {}
 
-  /// Adds each law's force at (p, v, inverse_mass, t) to (fx, fy, fz), in order; returns the
-  /// laws whose force was beyond the range of R, one bit each (law 0 the lowest): with
-  /// POINTMASS_CHECKS on those are not added, as update_force and apply do not add them.
-  /// Branch free, so that the step's loop vectorises around it.
   /// The laws' fused forms, for a step's law pass (forces/fused.hpp).
   [[nodiscard]] constexpr auto fused() const noexcept {
     return std::apply([](const G&... law) { return std::tuple{detail::fused_form(law)...}; },
                       laws_);
   }
+
+  /// Adds each law's force() at (p, v, inverse_mass, t) to (fx, fy, fz), in order; returns the
+  /// laws whose force was beyond the range of R, one bit each (law 0 the lowest): with
+  /// POINTMASS_CHECKS on those are not added, as update_force and apply do not add them.
+  /// (forces::integrate's sum, and the law pass's where a fused form was unsure.)
 
   template <Real R>
   POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr unsigned add(const Vector3<R>& p,

@@ -1653,9 +1653,12 @@ void fuzz_system(Input& in) {
           const std::size_t end = pick_bound(in, system.size());
           const bool backward = in.byte() % 2 == 1;
           const char* function = backward ? "step_range_backward" : "step_range";
-          (backward ? pointmass::detail::SystemAccess::Kernel<System>::step_range_backward
-                    : pointmass::detail::SystemAccess::Kernel<System>::step_range)(
-              view.arrays(), begin, end, parameters);
+          using Kernel = pointmass::detail::SystemAccess::Kernel<System>;
+          if (backward) {
+            Kernel::step_range_backward(view.arrays(), begin, end, parameters);
+          } else {
+            Kernel::step_range(view.arrays(), begin, end, parameters);
+          }
           if (end > system.size()) {
             expect_rejected(function, "end", end);
           } else if (begin > end) {
