@@ -149,9 +149,14 @@ template <class Arrays, class R, class Fused, class Laws>
 POINTMASS_DETAIL_ALWAYS_INLINE inline unsigned forces_of(const Arrays& arrays, std::size_t first,
                                                          std::size_t count, R t, const Fused& fused,
                                                          const Laws& laws) noexcept {
-  if constexpr (std::is_same_v<Laws, NoLaws>) {
-    return 0;
-  } else if constexpr (std::tuple_size_v<Fused> == 0) {  // forces::laws(): sub-steps alone
+  constexpr bool none = [] {  // no laws, or forces::laws() (sub-steps alone)
+    if constexpr (std::is_same_v<Laws, NoLaws>) {
+      return true;
+    } else {
+      return std::tuple_size_v<Fused> == 0;
+    }
+  }();
+  if constexpr (none) {
     return 0;
   } else {
     return law_pass(arrays, first, count, t, fused, laws);

@@ -103,12 +103,12 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr std::uint32_t above_produc
 /// 7/16 + e <= 1), so the root is t or its upper neighbour, which the exact test decides;
 /// near 1, 7/16 + 0.25 < 3/4 keeps t >= 1 - 2^-24, and t = 2 is kept (m < 4 < 2 (2 + 2^-23)).
 POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr float ordinary_root(float x) noexcept {
-  const std::uint32_t bits = __builtin_bit_cast(std::uint32_t, x);
+  const auto bits = __builtin_bit_cast(std::uint32_t, x);
   // m's biased exponent is 127 or 128, of x's parity (so x / m is an even power of 2).
   const std::uint32_t m_bits = ((bits ^ 0x00800000u) & 0x00ffffffu) + 0x3f800000u;
   const std::uint32_t half_m_bits = m_bits >> 1;
   const auto shift = static_cast<std::uint32_t>((bits >> 1) - half_m_bits);  // k << 23
-  const float m = __builtin_bit_cast(float, m_bits);
+  const auto m = __builtin_bit_cast(float, m_bits);
   float g = __builtin_bit_cast(float, static_cast<std::uint32_t>(0x5eb759dfu - half_m_bits));
   float y = m * (g + g);
   for (int step = 0; step < 2; ++step) {  // y -> sqrt(m), g -> 1 / (2 sqrt(m))
@@ -128,7 +128,7 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr float ordinary_root(float 
 /// one the exact test picks: within 0.9 ulp, sqrt(m) rounds to one of those two.
 POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr double ordinary_root(double x) noexcept {
   constexpr std::uint64_t exponent = 0xfff0000000000000u;
-  const std::uint64_t bits = __builtin_bit_cast(std::uint64_t, x);
+  const auto bits = __builtin_bit_cast(std::uint64_t, x);
   // (k + 512) << 52, k = floor((E - 1023) / 2) for the biased exponent E; then k << 52.
   const std::uint64_t shift =
       (((bits + (std::uint64_t{1} << 52)) >> 1) & exponent) - (std::uint64_t{512} << 52);
@@ -142,7 +142,7 @@ POINTMASS_DETAIL_ALWAYS_INLINE POINTMASS_HD constexpr double ordinary_root(doubl
   const double t = y + d;
   const double error = d - (t - y);  // t's rounding error, whose sign says where y + d lies
   const std::uint64_t low_bits = __builtin_bit_cast(std::uint64_t, t) - sign_of(error);
-  const double low = __builtin_bit_cast(double, low_bits);
+  const auto low = __builtin_bit_cast(double, low_bits);
   const double high = __builtin_bit_cast(double, static_cast<std::uint64_t>(low_bits + 1));
   const std::uint64_t root = low_bits + above_product(m, low, high);
   return __builtin_bit_cast(double, static_cast<std::uint64_t>(root + shift));

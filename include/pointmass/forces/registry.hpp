@@ -262,9 +262,9 @@ class ForceRegistry {
   }
   // A known field generator's registrations, eight at a time: their forces first (pure:
   // force(p, v, inverse_mass, t) reads only its body), then added in order, so the square
-  // roots and divisions of eight bodies overlap (+14% at 1,024 and 100,000 particles, float,
-  // benchmarks/forces_step.cpp). A report runs the user's handler, which may change a body or
-  // the registry: the rest of that block is then computed afresh, one after another.
+  // roots and divisions of eight bodies overlap. A report runs the user's handler, which may
+  // change a body or the registry: the rest of that block is then computed afresh, one after
+  // another (update_each).
   template <class Vec>
   [[nodiscard]] bool update_block(const Vec& entries, std::size_t count, real duration,
                                   std::uint32_t replacements) const {
@@ -284,15 +284,23 @@ class ForceRegistry {
         if (pointmass::detail::check_force("forces::update_force", f[j])) {
           e.particle->add_force(f[j]);
         } else {
-          if (replacements_ != replacements) return false;
-          for (std::size_t k = i + j + 1; k < i + m; ++k) {
-            if (entries[k].particle == nullptr) continue;
-            entries[k].update(duration);
-            if (replacements_ != replacements) return false;
-          }
+          if (!update_each(entries, i + j + 1, i + m, duration, replacements)) return false;
           break;
         }
       }
+    }
+    return true;
+  }
+  // Registrations [first, last) of `entries`, one after another; false when the registry was
+  // replaced (then the pass ends).
+  template <class Vec>
+  [[nodiscard]] bool update_each(const Vec& entries, std::size_t first, std::size_t last,
+                                 real duration, std::uint32_t replacements) const {
+    if (replacements_ != replacements) return false;
+    for (std::size_t k = first; k < last; ++k) {
+      if (entries[k].particle == nullptr) continue;
+      entries[k].update(duration);
+      if (replacements_ != replacements) return false;
     }
     return true;
   }

@@ -43,7 +43,7 @@ class SystemLawsStep : public Base {
   /// (features::Interpolation) is the one before it. k = 0 is a contract violation.
   template <class... G>
   void step(R duration, const forces::Laws<G...>& laws, Substeps substeps = {}) {
-    NoExpiryCallback none;
+    typename Base::NoCallback none;
     step_with(duration, laws, substeps, none);
   }
   // clang-format off
