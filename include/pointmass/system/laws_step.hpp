@@ -32,7 +32,8 @@ class SystemLawsStep : public Base {
 
  public:
   /// As step(duration), with each law's force on each particle added after its accumulated
-  /// force, in the order given, inside the step's loop: the bits of forces::apply(law, system,
+  /// force, in the order given, chunk by chunk just before the chunk's step (no pass over
+  /// memory of its own: detail/law_pass.hpp): the bits of forces::apply(law, system,
   /// duration) for each law in turn, then step(duration). A law's force beyond the range of
   /// the number type (docs/forces.md, Ranges) is not added to that particle, and the law is
   /// reported, once, after the step (with POINTMASS_CHECKS on; else added unchecked).
