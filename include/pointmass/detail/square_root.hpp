@@ -8,7 +8,8 @@
 // with no select at all, so that it vectorises at g++ -O2 on SSE2 too. 1/sqrt(x) is estimated
 // from the bit pattern and refined by Newton's (or Goldschmidt's) iteration, then the root is
 // decided exactly between two neighbours (a float's in float and 32-bit lanes alone).
-// No branch, and no exception but inexact that IEEE's sqrt would not raise.
+// No branch, and no exception but inexact that IEEE's sqrt would not raise (nor the invalid
+// one it raises for a negative x).
 //
 // Exact decision: for neighbours a < b (b = a + ulp(a)), sqrt(x) > (a + b) / 2 exactly when
 // x > a b: with a = A 2^q (A an integer of R's digits), x / 4^q is an integer X near A^2, and
@@ -165,11 +166,13 @@ template <class R>
   const R unscale = pick(subnormal, sizeof(R) == 4 ? R(0x1p-12) : R(0x1p-27), R(1));
   const R root = ordinary_root(pick(ordinary, x, R(1)) * scale) * unscale;
   // ±0, +infinity and NaN are their own root (x + x quiets a NaN, as sqrt does); a negative
-  // x's is 0 / 0 (or, for -infinity, NaN / NaN), formed only where x is negative.
+  // x's is a quiet NaN, by its bits (no division: 0 / 0 is a division by zero to a sanitizer,
+  // and a NaN's payload is not part of sqrt's result).
   const R itself = pick(ordinary | negative, R(0), x);
-  const R negative_x = pick(negative, x, R(0));
-  const R zero = pick(negative, negative_x - negative_x, R(1));
-  const R special = pick(negative, zero / zero, itself + itself);
+  constexpr R quiet_nan = __builtin_bit_cast(
+      R, static_cast<Bits>(infinity |
+                           (static_cast<Bits>(FloatBits<R>::magnitude_mask ^ infinity) + 1) / 2));
+  const R special = pick(negative, quiet_nan, itself + itself);
   return pick(ordinary, root, special);
 }
 
