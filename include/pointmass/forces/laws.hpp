@@ -68,7 +68,6 @@ template <class... G>
 class Laws {
  public:
   static_assert(sizeof...(G) <= 32, "forces::laws: at most 32 laws in one step");
-  static constexpr std::size_t size = sizeof...(G);
   constexpr explicit Laws(const G&... laws) noexcept : laws_(laws...) {}
 
   /// The laws' fused forms, for a step's law pass (forces/fused.hpp).
@@ -132,11 +131,6 @@ template <class... G>
 }
 
 namespace detail {
-template <class L>
-struct IsLaws : std::false_type {};
-template <class... G>
-struct IsLaws<Laws<G...>> : std::true_type {};
-
 /// Every law of L is a ForceLaw for R; else the one-sentence error (a law that reads another
 /// body, such as a Spring, or anything not a law of one body's own state).
 template <class R, class... G>
@@ -144,10 +138,6 @@ constexpr bool all_laws(const Laws<G...>*) noexcept {
   return (ForceLaw<G, R> && ...);
 }
 }  // namespace detail
-
-/// A type usable as a step's laws for arithmetic R: a Laws of ForceLaws.
-template <class L, class R>
-concept LawsFor = detail::IsLaws<std::remove_cvref_t<L>>::value;
 
 /// Reports each law of `beyond` (Laws::add's bits) through the contract, naming its index.
 inline void report_beyond(const char* function, unsigned beyond) {
