@@ -9,7 +9,9 @@
 //   * the same particles, each given both forces by forces::update_force, then stepped;
 //   * a ParticleSystem with ForceAccumulator: forces::apply for each generator, then step;
 //   * the same system stepped with both laws fused into the step, step(t, forces::laws(...));
-//   * a hand-written loop computing both forces and the step in one pass.
+//   * a hand-written loop computing both forces and the step in one pass;
+//   * the roofs: the registry's walk with generators that add nothing (its memory roof), and
+//     the compute roofs of the fused step and of the per-particle forces (support/law_roofs.hpp).
 // scripts/benchmark-forces.sh runs it and writes docs/results/forces.md.
 // Counters: items_per_second = particle-steps/s.
 #include <pointmass/forces.hpp>
@@ -26,6 +28,7 @@
 
 #include "reference_engine.hpp"
 #include "support/bench_support.hpp"
+#include "support/law_roofs.hpp"
 
 namespace {
 
@@ -256,6 +259,25 @@ void BM_HandFused(benchmark::State& state) {
   });
 }
 
+// The compute roofs (support/law_roofs.hpp) of the job: the fused laws and step, vectorised,
+// for step(t, laws); each force() and integrate, per particle, for the registry.
+template <class R>
+pointmass_benchmarks::RoofStart<R> roof_start(std::size_t k) {
+  return {start_position<R>(k), start_velocity<R>(k), mass_of<R>(k)};
+}
+template <class R>
+void BM_FusedRoof(benchmark::State& state) {
+  const Laws<R> laws;
+  pointmass_benchmarks::fused_compute_roof(state, laws.drag, laws.spring, {R(0), -g<R>, R(0)},
+                                           kept_per_second<R>, duration<R>(), roof_start<R>);
+}
+template <class R>
+void BM_ScalarRoof(benchmark::State& state) {
+  const Laws<R> laws;
+  pointmass_benchmarks::scalar_compute_roof(state, laws.drag, laws.spring, {R(0), -g<R>, R(0)},
+                                            kept_per_second<R>, duration<R>(), roof_start<R>);
+}
+
 void sizes(benchmark::internal::Benchmark* b) {
   b->Arg(1024);
   if (std::getenv("POINTMASS_BENCHMARK_SMOKE") == nullptr) b->Arg(100000)->Arg(1000000);
@@ -269,7 +291,9 @@ void sizes(benchmark::internal::Benchmark* b) {
   BENCHMARK(BM_UpdateForce<R>)->Apply(sizes);  \
   BENCHMARK(BM_SystemApply<R>)->Apply(sizes);  \
   BENCHMARK(BM_SystemLaws<R>)->Apply(sizes);   \
-  BENCHMARK(BM_HandFused<R>)->Apply(sizes)
+  BENCHMARK(BM_HandFused<R>)->Apply(sizes);    \
+  BENCHMARK(BM_FusedRoof<R>)->Apply(sizes);    \
+  BENCHMARK(BM_ScalarRoof<R>)->Apply(sizes)
 
 POINTMASS_FORCES_BENCHMARKS(float);
 POINTMASS_FORCES_BENCHMARKS(double);

@@ -19,7 +19,6 @@
 
 #include <benchmark/benchmark.h>
 
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -28,6 +27,7 @@
 
 #include "support/bench_refresh.hpp"
 #include "support/bench_support.hpp"
+#include "support/law_roofs.hpp"
 
 namespace {
 
@@ -163,53 +163,13 @@ void BM_MemoryRoof(benchmark::State& state) {
   set_counters(state, 1);
 }
 
-// The laws and the Euler step of 64 particles held in local arrays, stepped again and again.
-constexpr std::size_t block = 64;
-struct Block {
-  std::array<R, block> px, py, pz, vx, vy, vz, w;
-};
-
 void BM_ComputeRoof(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  const std::size_t blocks = (n + block - 1) / block;
-  Block start{};
-  for (std::size_t i = 0; i < block; ++i) {
-    const Vector3<R> p = start_position(i * 16);
-    const Vector3<R> v = start_velocity(i * 16);
-    start.px[i] = p.x, start.py[i] = p.y, start.pz[i] = p.z;
-    start.vx[i] = v.x, start.vy[i] = v.y, start.vz[i] = v.z;
-    start.w[i] = 1.0f / mass_of(i);
-  }
-  Block b = start;
-  // The forms the step's law pass evaluates (forces/fused.hpp).
-  const auto fused_drag = forces::detail::fused_form(drag);
-  const auto fused_spring = forces::detail::fused_form(spring);
-  const R t = duration<R>();
-  const R kept = std::pow(kept_per_second, t);  // d^t, as the system keeps it for t
-  std::uint64_t passes = 0;
-  for (auto _ : state) {
-    for (std::size_t k = 0; k < blocks; ++k) {
-      // No pragma: local arrays alias nothing, and the compiler vectorises this loop exactly
-      // when it can vectorise the step's (clang's assume_safety warns where it cannot).
-      for (std::size_t i = 0; i < block; ++i) {
-        const Vector3<R> p{b.px[i], b.py[i], b.pz[i]};
-        const Vector3<R> v{b.vx[i], b.vy[i], b.vz[i]};
-        const R w = b.w[i];
-        const Vector3<R> d = fused_drag.fused(p, v, w, t).force;
-        const Vector3<R> s = fused_spring.fused(p, v, w, t).force;
-        const Vector3<R> f{(R(0) + d.x) + s.x, (R(0) + d.y) + s.y, (R(0) + d.z) + s.z};
-        const Vector3<R> a = gravity + f * w;
-        b.px[i] = p.x + v.x * t, b.py[i] = p.y + v.y * t, b.pz[i] = p.z + v.z * t;
-        b.vx[i] = v.x * kept + a.x * t, b.vy[i] = v.y * kept + a.y * t;
-        b.vz[i] = v.z * kept + a.z * t;
-      }
-      benchmark::DoNotOptimize(b);
-      benchmark::ClobberMemory();
-      if (++passes % 4096 == 0) b = start;  // 68 s of motion: never near rest
-    }
-  }
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(blocks * block));
-  state.counters["array_bytes"] = static_cast<double>(n * System::storage_bytes_per_particle);
+  pointmass_benchmarks::fused_compute_roof(
+      state, drag, spring, gravity, kept_per_second, duration<R>(), [](std::size_t k) {
+        return pointmass_benchmarks::RoofStart<R>{start_position(k), start_velocity(k), mass_of(k)};
+      });
+  state.counters["array_bytes"] = static_cast<double>(static_cast<std::size_t>(state.range(0)) *
+                                                      System::storage_bytes_per_particle);
 }
 
 void sizes(benchmark::internal::Benchmark* b) {

@@ -26,7 +26,13 @@ rows = [("Cyclone's particles and force registry (baseline)", "BM_Cyclone"),
         ("`Particle<R>`, `forces::update_force` for each force, then `integrate`", "BM_UpdateForce"),
         ("`ParticleSystem`: `forces::apply` for each force, then `step`", "BM_SystemApply"),
         ("`ParticleSystem`: `step(t, forces::laws(drag, spring))`", "BM_SystemLaws"),
-        ("a hand-written loop: both forces and the step in one pass", "BM_HandFused")]
+        ("a hand-written loop: both forces and the step in one pass", "BM_HandFused"),
+        ("roof, the registry's memory: its walk with generators that add nothing",
+         "BM_RegistryRoof"),
+        ("roof, per-particle arithmetic: each `force()` and `integrate`, data in L1",
+         "BM_ScalarRoof"),
+        ("roof, fused arithmetic: the laws' fused forms and the step, data in L1",
+         "BM_FusedRoof")]
 for real in ("float", "double"):
     print(f"\n## {real}\n\n| loop | 1,024 | 100,000 | 1,000,000 |\n|---|---|---|---|")
     for label, name in rows:
