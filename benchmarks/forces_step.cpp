@@ -139,12 +139,12 @@ void BM_Registry(benchmark::State& state) {
   });
 }
 
-// The registry's memory roof: the same 2N registrations and step, but generators that only
-// add a zero force (the particle's accumulator read and written, no arithmetic of the laws):
-// the walk's own cost and the traffic of its passes over the particles, in registration order.
+// The registry's memory roof: the same 2N registrations and step, but field generators whose
+// force is zero (the particle read, its accumulator read and written, no arithmetic of the
+// laws): the walk's own cost and the traffic of its passes over the particles.
 template <class R>
 struct Touch {
-  void update_force(Body<R>& particle, R) const { particle.add_force({}); }
+  [[nodiscard]] Vector3<R> force(const Vector3<R>&, const Vector3<R>&, R, R) const { return {}; }
 };
 template <class R>
 struct TouchToo : Touch<R> {};

@@ -4,6 +4,7 @@
 // forces.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <limits>
 #include <vector>
 
@@ -222,4 +223,87 @@ TEST_CASE_TEMPLATE("registry: a known registration removed before its turn adds 
   CHECK(particles[3].force_accumulator() == Vector3<R>{});
   CHECK(particles[4].force_accumulator() == particles[2].force_accumulator());
   CHECK(registry.size() == 11);
+}
+
+namespace {
+// A known field generator that logs its calls: a constant push, and its id in `log`.
+template <class R, int Type>
+struct Logged {
+  Vector3<R> push;
+  int id;
+  std::vector<int>* log;
+  [[nodiscard]] Vector3<R> force(const Vector3<R>&, const Vector3<R>&, R, R) const {
+    log->push_back(id);
+    return push;
+  }
+};
+}  // namespace
+
+TEST_CASE_TEMPLATE("registry: field generator types in lockstep only while aligned", R, float,
+                   double) {
+  using A = Logged<R, 0>;
+  using B = Logged<R, 1>;
+  using Registry = forces::ForceRegistry<Particle<R>, A, B>;
+  std::vector<int> log;
+  std::vector<Particle<R>> particles(20);
+  std::vector<A> as;
+  std::vector<B> bs;
+  for (int k = 0; k < 20; ++k) {
+    as.push_back({{R(1), R(0), R(0)}, k, &log});
+    bs.push_back({{R(0), R(1), R(0)}, 100 + k, &log});
+  }
+  std::vector<int> lockstep;  // eight of A, eight of B, in turn
+  for (int first = 0; first < 20; first += 8) {
+    for (int k = first; k < std::min(first + 8, 20); ++k) lockstep.push_back(k);
+    for (int k = first; k < std::min(first + 8, 20); ++k) lockstep.push_back(100 + k);
+  }
+
+  SUBCASE("the same particles in the same order: walked together, eight at a time") {
+    Registry registry;
+    for (std::size_t k = 0; k < 20; ++k) {
+      registry.add(particles[k], as[k]);
+      registry.add(particles[k], bs[k]);
+    }
+    registry.update_forces(R(0.01));
+    CHECK(log == lockstep);
+    CHECK(particles[7].force_accumulator() == Vector3<R>{R(1), R(1), R(0)});
+
+    // Each type loses one registration (particle 0's A, particle 19's B): the sizes are equal
+    // again, the particles not the same: type by type.
+    registry.remove(particles[0], as[0]);
+    registry.remove(particles[19], bs[19]);
+    log.clear();
+    registry.update_forces(R(0.01));
+    std::vector<int> by_type;
+    for (int k = 1; k < 20; ++k) by_type.push_back(k);
+    for (int k = 0; k < 19; ++k) by_type.push_back(100 + k);
+    CHECK(log == by_type);
+  }
+  SUBCASE("the second type in the reverse order: type by type") {
+    Registry registry;
+    for (std::size_t k = 0; k < 20; ++k) registry.add(particles[k], as[k]);
+    for (std::size_t k = 20; k-- > 0;) registry.add(particles[k], bs[k]);
+    registry.update_forces(R(0.01));
+    std::vector<int> by_type;
+    for (int k = 0; k < 20; ++k) by_type.push_back(k);
+    for (int k = 19; k >= 0; --k) by_type.push_back(100 + k);
+    CHECK(log == by_type);
+  }
+  SUBCASE("a particle twice in each type, a block apart: type by type, its sums in that order") {
+    // Particle 0 gets A 1, then A -1, then B d, then B d: 0 + d + d = 2d. In lockstep it would
+    // get 1, d, -1, d: (1 + d) rounds to 1, so d.
+    const R d = std::numeric_limits<R>::epsilon() / R(4);
+    Registry registry;
+    std::vector<A> a2;
+    std::vector<B> b2;
+    for (int k = 0; k < 9; ++k) {
+      a2.push_back({{k == 8 ? R(-1) : R(1), R(0), R(0)}, k, &log});
+      b2.push_back({{d, R(0), R(0)}, 100 + k, &log});
+    }
+    for (std::size_t k = 0; k < 9; ++k) registry.add(particles[k % 8], a2[k]);
+    for (std::size_t k = 0; k < 9; ++k) registry.add(particles[k % 8], b2[k]);
+    registry.update_forces(R(0.01));
+    REQUIRE(((R(1) + d) + R(-1)) + d != ((R(1) + R(-1)) + d) + d);  // the orders differ
+    CHECK(particles[0].force_accumulator().x == ((R(1) + R(-1)) + d) + d);
+  }
 }

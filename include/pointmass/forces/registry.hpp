@@ -13,6 +13,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <tuple>
 #include <type_traits>
@@ -168,6 +169,10 @@ class ForceRegistry {
   /// `duration`: the known types first (in the order of Known...), then the others, each in
   /// the order they were added. A negative, NaN or infinite duration is a contract
   /// violation, checked when POINTMASS_CHECKS is on: reported once, and no force is added.
+  /// When the known types are all field generators whose registrations name the same
+  /// particles in the same order, each once (one of each per particle, added walking an
+  /// array), they are walked together, eight registrations of each in turn: each particle's
+  /// forces are added in the same order, in one pass over the particles, not one per type.
   void update_forces(real duration) {
 #if POINTMASS_CHECKS
     if (!pointmass::detail::check_duration("ForceRegistry::update_forces", duration)) return;
@@ -182,6 +187,14 @@ class ForceRegistry {
         },
         known_);
     const std::size_t erased = erased_.size();
+    if constexpr (lockstep_types) {
+      if (in_lockstep()) {
+        if (update_lockstep(counts[0], duration, replacements)) {
+          static_cast<void>(update_all(erased_, erased, duration, replacements));
+        }
+        return;
+      }
+    }
     std::size_t k = 0;
     const auto all = [&](const auto& entries, std::size_t count) {
       return update_all(entries, count, duration, replacements);
@@ -250,7 +263,7 @@ class ForceRegistry {
     if constexpr (!std::is_same_v<E, ErasedEntry>) {
       using G = std::remove_pointer_t<decltype(E::generator)>;
       if constexpr (!HasUpdateForce<G, P> && FieldGenerator<G, real>) {
-        return update_block(entries, count, duration, replacements);
+        return update_block(entries, 0, count, duration, replacements);
       }
     }
     for (std::size_t i = 0; i < count; ++i) {
@@ -266,12 +279,11 @@ class ForceRegistry {
   // change a body or the registry: the rest of that block is then computed afresh, one after
   // another (update_each).
   template <class Vec>
-  [[nodiscard]] bool update_block(const Vec& entries, std::size_t count, real duration,
-                                  std::uint32_t replacements) const {
-    constexpr std::size_t block = 8;
+  [[nodiscard]] bool update_block(const Vec& entries, std::size_t first, std::size_t last,
+                                  real duration, std::uint32_t replacements) const {
     std::array<Vector3<real>, block> f;
-    for (std::size_t i = 0; i < count; i += block) {
-      const std::size_t m = std::min(block, count - i);
+    for (std::size_t i = first; i < last; i += block) {
+      const std::size_t m = std::min(block, last - i);
       for (std::size_t j = 0; j < m; ++j) {
         const auto& e = entries[i + j];
         if (e.particle == nullptr) continue;
@@ -291,8 +303,48 @@ class ForceRegistry {
     }
     return true;
   }
-  // Registrations [first, last) of `entries`, one after another; false when the registry was
-  // replaced (then the pass ends).
+  static constexpr std::size_t block = 8;
+  // Every known type a field generator (forces computed apart from their additions), and more
+  // than one of them: a walk in lockstep can save passes.
+  static constexpr bool lockstep_types = sizeof...(Known) > 1 &&
+                                         ((!HasUpdateForce<Known, P> &&
+                                           FieldGenerator<Known, real>)&&...);
+  // Whether the known types' registrations name the same particles at the same indices, each
+  // once (addresses rising): then a walk in lockstep adds each particle's forces in the same
+  // order. Each index is checked once; a mismatch (misaligned) stands until a removal.
+  static constexpr std::size_t misaligned = static_cast<std::size_t>(-1);
+  bool in_lockstep() noexcept {
+    const auto sizes = std::apply([](const auto&... e) { return std::array{e.size()...}; }, known_);
+    const auto equal = [&](std::size_t size) { return size == sizes[0]; };
+    if (checked_ == misaligned || !std::all_of(sizes.begin(), sizes.end(), equal)) return false;
+    const auto& lead = std::get<0>(known_);
+    for (; checked_ < sizes[0]; ++checked_) {
+      const P* particle = lead[checked_].particle;
+      const bool same = std::apply(
+          [&](const auto&... e) { return ((e[checked_].particle == particle) && ...); }, known_);
+      const bool rising = checked_ == 0 || std::less<>{}(lead[checked_ - 1].particle, particle);
+      if (particle == nullptr || !same || !rising) {
+        checked_ = misaligned;
+        return false;
+      }
+    }
+    return true;
+  }
+  // The known types' first `count` registrations, `block` of each type in turn (in_lockstep).
+  [[nodiscard]] bool update_lockstep(std::size_t count, real duration,
+                                     std::uint32_t replacements) const {
+    for (std::size_t i = 0; i < count; i += block) {
+      const std::size_t last = std::min(count, i + block);
+      const bool going = std::apply(
+          [&](const auto&... entries) {
+            return (update_block(entries, i, last, duration, replacements) && ...);
+          },
+          known_);
+      if (!going || replacements_ != replacements) return false;
+    }
+    return true;
+  }
+  // Registrations [first, last), one after another; false once the registry was replaced.
   template <class Vec>
   [[nodiscard]] bool update_each(const Vec& entries, std::size_t first, std::size_t last,
                                  real duration, std::uint32_t replacements) const {
@@ -313,6 +365,7 @@ class ForceRegistry {
     known_ = std::move(known);
     erased_ = std::move(erased);
     removed_ = 0;
+    checked_ = 0;  // in_lockstep checks again
     ++replacements_;
   }
 
@@ -344,6 +397,7 @@ class ForceRegistry {
       if (same) {
         e.particle = nullptr;
         ++removed_;
+        checked_ = 0;  // in_lockstep checks again
         return true;
       }
     }
@@ -351,6 +405,7 @@ class ForceRegistry {
   }
   template <class Vec>
   void mark_all(Vec& entries) noexcept {
+    checked_ = 0;  // in_lockstep checks again
     for (auto& e : entries) {
       if (e.particle != nullptr) ++removed_;
       e.particle = nullptr;
@@ -387,6 +442,7 @@ class ForceRegistry {
   std::size_t removed_ = 0;
   int passes_ = 0;
   std::uint32_t replacements_ = 0;  // changed by every move and assignment: a pass ends
+  std::size_t checked_ = 0;         // registrations found in lockstep (in_lockstep)
   std::vector<Retired> retired_;    // replaced during a pass, destroyed after it
 };
 
