@@ -83,10 +83,20 @@ namespace detail {
 /// runs it; false when there was nothing to do (see begin_step).
 /// With `laws` (forces::Laws), fused in as ParticleSystem::step(duration, laws) fuses them;
 /// `beyond` gets the laws whose force was beyond range on some particle (Laws::add).
+/// With `substeps` > 1, each chunk takes them in one pass (ParticleSystem::step(duration,
+/// laws, Substeps{k})): the view's step is then duration / substeps.
 template <class ExecutionPolicy, class System, class R, class Laws = NoLaws>
 typename System::StepView step_chunks(ExecutionPolicy&& policy, System& system, R duration,
-                                      const Laws& laws = {}, unsigned* beyond = nullptr) {
-  typename System::StepView view = SystemAccess::begin_step(system, duration);
+                                      const Laws& laws = {}, unsigned* beyond = nullptr,
+                                      std::size_t substeps = 1) {
+  const R length = substeps == 1 ? duration : duration / static_cast<R>(substeps);
+#if POINTMASS_HOST_CHECKS
+  // A bad duration is reported as the caller gave it, not as a sub-step's; nothing is done.
+  if (substeps != 1 && !check_duration("step", duration)) {
+    return SystemAccess::begin_step(system, R(0));
+  }
+#endif
+  typename System::StepView view = SystemAccess::begin_step(system, length);
   constexpr std::size_t chunk = 16384;
   const std::size_t size = view.size();
   const std::size_t chunks = (size + chunk - 1) / chunk;
@@ -96,8 +106,13 @@ typename System::StepView step_chunks(ExecutionPolicy&& policy, System& system, 
                 CountingIterator(chunks), [&](std::size_t c) {
                   const SameFlushModes same_modes(modes);
                   const std::size_t begin = c * chunk;
-                  const unsigned bits = SystemAccess::Kernel<System>::step_range(
-                      view.arrays(), begin, std::min(begin + chunk, size), view.parameters(), laws);
+                  using Kernel = SystemAccess::Kernel<System>;
+                  const std::size_t end = std::min(begin + chunk, size);
+                  const unsigned bits =
+                      substeps == 1
+                          ? Kernel::step_range(view.arrays(), begin, end, view.parameters(), laws)
+                          : Kernel::step_range_substeps(view.arrays(), begin, end,
+                                                        view.parameters(), laws, substeps);
                   if (bits != 0) found.fetch_or(bits, std::memory_order_relaxed);
                 });
   if (beyond != nullptr) *beyond = found.load(std::memory_order_relaxed);
@@ -137,13 +152,14 @@ void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system
 }
 
 /// As step(policy, system, duration), with `laws` (forces::Laws) fused into each chunk's loop,
-/// as system.step(duration, laws) fuses them, bit for bit; a law whose force was beyond range
-/// is reported after the step, on the calling thread. (Sub-steps: system.step on one thread.)
+/// as system.step(duration, laws, substeps) fuses them, bit for bit: with Substeps{k}, each
+/// chunk takes k steps of duration / k in one pass. A law whose force was beyond range is
+/// reported after the step, on the calling thread.
 template <class ExecutionPolicy, class S, class D, class P, class... Features, class... G>
   requires(std::is_execution_policy_v<std::remove_cvref_t<ExecutionPolicy>>)
 void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system,
           typename ParticleSystem<S, D, P, Features...>::real duration,
-          const forces::Laws<G...>& laws) {
+          const forces::Laws<G...>& laws, Substeps substeps = {}) {
   using System = ParticleSystem<S, D, P, Features...>;
   using R = typename System::real;
   static_assert(System::template has<features::ForceAccumulator>,
@@ -156,10 +172,11 @@ void step(ExecutionPolicy&& policy, ParticleSystem<S, D, P, Features...>& system
                 "pointmass::step(policy, system, duration, laws): this system stores its "
                 "positions wider than its arithmetic; apply the forces with forces::apply(law, "
                 "forces::relative_to(system, origin), t) before the step");
+  if (!detail::check_at_least("step", "substeps", substeps.count, std::size_t{1})) return;
   unsigned beyond = 0;
   detail::SystemAccess::finish_step(
-      system,
-      detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration, laws, &beyond));
+      system, detail::step_chunks(std::forward<ExecutionPolicy>(policy), system, duration, laws,
+                                  &beyond, substeps.count));
   if (beyond != 0) forces::report_beyond("step", beyond);
 }
 

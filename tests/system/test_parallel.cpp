@@ -14,6 +14,7 @@
 #include <execution>
 #include <limits>
 #include <random>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -302,4 +303,76 @@ TEST_CASE_TEMPLATE("a parallel step with force laws equals the serial step with 
   }
   CHECK(same);
   CHECK(!same_bits(serial.position(7), serial.previous_position(7)));
+}
+
+TEST_CASE_TEMPLATE("parallel sub-steps with force laws equal the serial sub-steps", R, float,
+                   double) {
+  using System =
+      ParticleSystem<R, damping::PerSecond, position::VelocityVerlet, features::ForceAccumulator,
+                     features::Interpolation, features::Lifetime>;
+  constexpr std::size_t count = 40'001;  // 3 chunks, the last partial
+  std::mt19937 engine(13);
+  System serial(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    // Lifetimes from 0.01 s: some particles expire within a frame's sub-steps.
+    serial.spawn(random_vector(engine, R(6)), random_vector(engine, R(3)));
+    serial.set_lifetime(i, R(0.01) + R(i % 97) / R(100));
+    serial.set_mass(i, R(1) + R(i % 5));
+  }
+  System parallel = serial;
+  const auto laws =
+      forces::laws(forces::Drag<R>(R(0.2), R(0.05)),
+                   forces::AnchoredSpring<R>(Vector3<R>{R(0), R(4), R(0)}, R(60), R(2)));
+  std::vector<std::size_t> expired_serial;
+  std::vector<std::size_t> expired_parallel;
+  for (int frame = 0; frame < 4; ++frame) {
+    serial.step(R(1) / R(60), laws, Substeps{4},
+                [&](std::size_t i) { expired_serial.push_back(i); });
+    pointmass::step(std::execution::par_unseq, parallel, R(1) / R(60), laws, Substeps{4});
+  }
+  REQUIRE(!expired_serial.empty());
+  REQUIRE(serial.size() == parallel.size());
+  bool same = true;
+  for (std::size_t i = 0; i < serial.size(); ++i) {
+    same = same && same_bits(serial.position(i), parallel.position(i)) &&
+           same_bits(serial.velocity(i), parallel.velocity(i)) &&
+           same_bits(serial.previous_position(i), parallel.previous_position(i)) &&
+           same_bits(serial.age(i), parallel.age(i));
+  }
+  CHECK(same);
+}
+
+namespace {
+std::vector<std::string> parallel_reports;  // NOLINT: the handler below is a plain function
+void record_parallel(const ContractViolation& violation) {
+  parallel_reports.push_back(describe(violation));
+}
+}  // namespace
+
+TEST_CASE("parallel sub-steps: none, or a bad duration, reported by name; nothing changes") {
+  using System = ParticleSystem<float, damping::PerSecond, position::Euler,
+                                features::ForceAccumulator, features::Interpolation>;
+  std::mt19937 engine(14);
+  System system(20'000);
+  for (std::size_t i = 0; i < 20'000; ++i) {
+    system.spawn(random_vector(engine, 6.0f), random_vector(engine, 3.0f));
+  }
+  const System before = system;
+  const auto laws = forces::laws(forces::Drag<float>(0.2f, 0.05f));
+  parallel_reports.clear();
+  const ContractHandler previous = set_contract_handler(&record_parallel);
+  pointmass::step(std::execution::par_unseq, system, 1.0f / 60, laws, Substeps{0});
+  pointmass::step(std::execution::par_unseq, system, -1.0f / 60, laws, Substeps{4});
+  set_contract_handler(previous);
+  REQUIRE(parallel_reports.size() == 2);
+  CHECK(parallel_reports[0].find("argument 'substeps' = 0") != std::string::npos);
+  // The duration as given, not a sub-step's (-1/240).
+  CHECK(parallel_reports[1].find("argument 'duration' = -0.0166") != std::string::npos);
+  bool same = true;
+  for (std::size_t i = 0; i < system.size(); ++i) {
+    same = same && same_bits(system.position(i), before.position(i)) &&
+           same_bits(system.velocity(i), before.velocity(i)) &&
+           same_bits(system.previous_position(i), before.previous_position(i));
+  }
+  CHECK(same);
 }
