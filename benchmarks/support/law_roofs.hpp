@@ -69,34 +69,24 @@ void fused_compute_roof(benchmark::State& state, const Drag& drag, const Spring&
   const auto fused_drag = pointmass::forces::detail::fused_form(drag);
   const auto fused_spring = pointmass::forces::detail::fused_form(spring);
   const R kept = std::pow(kept_per_second, t);  // d^t, as the system keeps it for t
-  // The loop inline here, not in a lambda for time_roof: g++ left the lambda's loop scalar.
-  const auto n = static_cast<std::size_t>(state.range(0));
-  const std::size_t blocks = (n + roof_block - 1) / roof_block;
-  Block b = first;
-  std::uint64_t passes = 0;
-  for (auto _ : state) {
-    for (std::size_t k = 0; k < blocks; ++k) {
-      // No pragma: local arrays alias nothing, and the compiler vectorises this loop exactly
-      // when it can vectorise the step's (clang's assume_safety warns where it cannot).
-      for (std::size_t i = 0; i < roof_block; ++i) {
-        using V = pointmass::Vector3<R>;
-        const V p{b.px[i], b.py[i], b.pz[i]};
-        const V v{b.vx[i], b.vy[i], b.vz[i]};
-        const R w = b.w[i];
-        const V d = fused_drag.fused(p, v, w, t).force;
-        const V s = fused_spring.fused(p, v, w, t).force;
-        const V f{(R(0) + d.x) + s.x, (R(0) + d.y) + s.y, (R(0) + d.z) + s.z};
-        const V a = acceleration + f * w;
-        b.px[i] = p.x + v.x * t, b.py[i] = p.y + v.y * t, b.pz[i] = p.z + v.z * t;
-        b.vx[i] = v.x * kept + a.x * t, b.vy[i] = v.y * kept + a.y * t;
-        b.vz[i] = v.z * kept + a.z * t;
-      }
-      benchmark::DoNotOptimize(b);
-      benchmark::ClobberMemory();
-      if (++passes % roof_refresh == 0) b = first;
+  // Captured by value: captured references could alias the block, and the loop stayed scalar.
+  time_roof(state, first, [=](Block& b) {
+    // No pragma: a local block aliases nothing, and the compiler vectorises this loop exactly
+    // when it can vectorise the step's (clang's assume_safety warns where it cannot).
+    for (std::size_t i = 0; i < roof_block; ++i) {
+      using V = pointmass::Vector3<R>;
+      const V p{b.px[i], b.py[i], b.pz[i]};
+      const V v{b.vx[i], b.vy[i], b.vz[i]};
+      const R w = b.w[i];
+      const V d = fused_drag.fused(p, v, w, t).force;
+      const V s = fused_spring.fused(p, v, w, t).force;
+      const V f{(R(0) + d.x) + s.x, (R(0) + d.y) + s.y, (R(0) + d.z) + s.z};
+      const V a = acceleration + f * w;
+      b.px[i] = p.x + v.x * t, b.py[i] = p.y + v.y * t, b.pz[i] = p.z + v.z * t;
+      b.vx[i] = v.x * kept + a.x * t, b.vy[i] = v.y * kept + a.y * t;
+      b.vz[i] = v.z * kept + a.z * t;
     }
-  }
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(blocks * roof_block));
+  });
 }
 
 /// Each law's force() added to a Particle<R>, then its integrate, under `acceleration` and
