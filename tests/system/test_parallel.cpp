@@ -349,7 +349,7 @@ void record_parallel(const ContractViolation& violation) {
 }
 }  // namespace
 
-TEST_CASE("parallel sub-steps: none, or a bad duration, reported by name; nothing changes") {
+TEST_CASE("parallel sub-steps: none, or a bad duration, is reported by name and changes nothing") {
   using System = ParticleSystem<float, damping::PerSecond, position::Euler,
                                 features::ForceAccumulator, features::Interpolation>;
   std::mt19937 engine(14);
