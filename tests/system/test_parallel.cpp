@@ -362,12 +362,15 @@ TEST_CASE("parallel sub-steps: none, or a bad duration, is reported by name and 
   parallel_reports.clear();
   const ContractHandler previous = set_contract_handler(&record_parallel);
   pointmass::step(std::execution::par_unseq, system, 1.0f / 60, laws, Substeps{0});
-  pointmass::step(std::execution::par_unseq, system, -1.0f / 60, laws, Substeps{4});
-  set_contract_handler(previous);
-  REQUIRE(parallel_reports.size() == 2);
+  REQUIRE(parallel_reports.size() == 1);
   CHECK(parallel_reports[0].find("argument 'substeps' = 0") != std::string::npos);
+#if POINTMASS_CHECKS  // a duration is checked only with the checks on, as system.step's
+  pointmass::step(std::execution::par_unseq, system, -1.0f / 60, laws, Substeps{4});
+  REQUIRE(parallel_reports.size() == 2);
   // The duration as given, not a sub-step's (-1/240).
   CHECK(parallel_reports[1].find("argument 'duration' = -0.0166") != std::string::npos);
+#endif
+  set_contract_handler(previous);
   bool same = true;
   for (std::size_t i = 0; i < system.size(); ++i) {
     same = same && same_bits(system.position(i), before.position(i)) &&
